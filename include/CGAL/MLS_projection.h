@@ -1,0 +1,19 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Umbrella header of the MLS_projection package.
+
+#ifndef CGAL_MLS_PROJECTION_H
+#define CGAL_MLS_PROJECTION_H
+
+#include <CGAL/MLS_projection/Weight_function.h>
+#include <CGAL/MLS_projection/Projection_options.h>
+#include <CGAL/MLS_projection/Projection_status.h>
+#include <CGAL/MLS_projection/Projection_result.h>
+#include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/project_points.h>
+
+#endif // CGAL_MLS_PROJECTION_H

@@ -1,0 +1,45 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H
+#define CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H
+
+#include <CGAL/MLS_projection/internal/Dimension.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionFunctionSpaces
+/// The trivial function space \f$\mathcal{F} = \{0\}\f$: the local surface is the frame's
+/// hyperplane itself. With it, Levin's projection is the first phase alone
+/// (the projection of the query onto the optimal plane).
+///
+/// \cgalModels `MLSGraphFunctionSpace`
+/// \tparam D the ambient dimension, 2 or 3
+template <int D>
+class Plane_function_space {
+public:
+  static constexpr int ambient_dimension = D;
+  static constexpr int number_of_parameters = 0;
+  using Parameters = Eigen::Matrix<double, 0, 1>;
+  using Domain_point = internal::Vec<D - 1>;
+
+  static const char* name() { return "plane"; }
+  /// The fewest neighbours a fit needs.
+  static constexpr std::size_t minimum_number_of_points() { return D; }
+
+  /// The member fitted to `n` points in frame coordinates (the first `D-1` coordinates in the
+  /// tangent hyperplane, the last along the normal) with weights `w`: always \f$f = 0\f$.
+  Parameters fit(const internal::Vec<D>*, const double*, std::size_t) const { return Parameters(); }
+  /// \f$f(u)\f$
+  double height(const Parameters&, const Domain_point&) const { return 0.; }
+  /// \f$\nabla f(u)\f$
+  Domain_point gradient(const Parameters&, const Domain_point&) const { return Domain_point::Zero(); }
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H

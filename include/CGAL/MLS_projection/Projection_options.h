@@ -1,0 +1,38 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_PROJECTION_OPTIONS_H
+#define CGAL_MLS_PROJECTION_PROJECTION_OPTIONS_H
+
+#include <CGAL/MLS_projection/Weight_function.h>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionRef
+/// The knobs shared by every projection operator. The defaults suit noiseless to
+/// moderately noisy scans; every field is documented in the user manual.
+struct Projection_options {
+  /// The bandwidth \f$h\f$ of the weight function. 0 (default): derived from the data
+  /// as the mean distance from an input point to its `k`-th nearest neighbour.
+  double bandwidth = 0;
+  /// The number of neighbours used to derive \f$h\f$ and for the initial weighted PCA.
+  /// 0 (default): 6 for curves in 2D, 16 for surfaces in 3D.
+  int k = 0;
+  /// The kind of weight function.
+  Weight_kind weight = Weight_kind::GAUSSIAN;
+  /// The Gaussian weight is truncated at `gaussian_cutoff * h`.
+  double gaussian_cutoff = 4.;
+  /// The support radius of Wendland's weight, in units of \f$h\f$.
+  double wendland_support = 2.5;
+  /// The largest number of energy evaluations of one optimiser run.
+  int max_evaluations = 400;
+  /// The optimiser stops when the relative decrease of the energy or the relative step
+  /// falls below this value.
+  double tolerance = 1e-12;
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_PROJECTION_OPTIONS_H

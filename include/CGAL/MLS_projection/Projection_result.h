@@ -1,0 +1,65 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_PROJECTION_RESULT_H
+#define CGAL_MLS_PROJECTION_PROJECTION_RESULT_H
+
+#include <CGAL/MLS_projection/Projection_status.h>
+#include <CGAL/MLS_projection/internal/Dimension.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionRef
+/// The local reference frame \f$H\f$ of a projection: an origin \f$q\f$, a unit normal and
+/// an orthonormal basis of the tangent hyperplane (one vector in 2D, two in 3D).
+/// The coefficients of the local function are expressed in this frame.
+template <class GeomTraits, int D>
+struct Local_frame {
+  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;
+  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector;
+  Point origin;
+  Vector normal;
+  std::array<Vector, D - 1> tangents;
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// Everything a projection computes. When `status` is not a success (see `is_success()`),
+/// `point` is the query itself and `normal` is the null vector: no field is ever NaN.
+template <class GeomTraits, int D>
+struct Projection_result {
+  using FT = typename GeomTraits::FT;
+  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;
+  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector;
+
+  /// The projected point \f$P(r)\f$.
+  Point point;
+  /// The unit normal of the local function at `point`, oriented as documented by the operator.
+  Vector normal;
+  /// The local frame \f$H\f$ found by the optimisation.
+  Local_frame<GeomTraits, D> frame;
+  /// The parameters of the local function in `frame`, as documented by the function space.
+  std::vector<double> coefficients;
+  /// The weighted mean squared residual of the final local fit (squared length units).
+  double energy = 0;
+  /// Iterations of the non-linear optimiser (summed over all starts and rounds).
+  int iterations = 0;
+  /// The number of input points in the final neighbourhood.
+  std::size_t number_of_neighbors = 0;
+  /// `true` when `point` lies on a singular set (crease or apex) of the local function.
+  bool is_on_feature = false;
+  /// The crease direction when `is_on_feature` (null otherwise, and at an apex).
+  Vector feature_direction = NULL_VECTOR;
+  Projection_status status = Projection_status::INVALID_QUERY;
+
+  bool is_success() const { return MLS::is_success(status); }
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_PROJECTION_RESULT_H

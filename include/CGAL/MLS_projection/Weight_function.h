@@ -1,0 +1,61 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_WEIGHT_FUNCTION_H
+#define CGAL_MLS_PROJECTION_WEIGHT_FUNCTION_H
+
+#include <CGAL/assertions.h>
+
+#include <cmath>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionRef
+/// The kinds of weight function \f$\omega\f$ of the MLS energies.
+enum class Weight_kind {
+  /// \f$\omega(d) = e^{-d^2/h^2}\f$, truncated at `gaussian_cutoff * h` (4h by default,
+  /// where the weight is below \f$10^{-6}\f$ of its maximum).
+  GAUSSIAN,
+  /// Wendland's \f$C^2\f$ function \f$\omega(d) = (1-d/R)^4 (4d/R+1)\f$ for \f$d < R\f$, 0 beyond,
+  /// with support radius \f$R\f$ = `wendland_support * h` (2.5h by default). Compact support
+  /// makes members of the function space exactly reproducible.
+  WENDLAND
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// A radial weight function with bandwidth `h`, evaluated on squared distances.
+/// Cheap to copy; all members are `const`.
+class Weight_function {
+public:
+  /// \pre `h > 0` and `support_factor > 0`
+  Weight_function(Weight_kind kind, double h, double support_factor)
+    : kind_(kind), h_(h), inv_h2_(1. / (h * h)), radius_(support_factor * h), inv_r_(1. / (support_factor * h)) {
+    CGAL_precondition(h > 0 && support_factor > 0);
+  }
+
+  Weight_kind kind() const { return kind_; }
+  /// The bandwidth \f$h\f$.
+  double bandwidth() const { return h_; }
+  /// The weight is zero beyond this distance.
+  double support_radius() const { return radius_; }
+
+  /// The weight of a point at squared distance `d2`.
+  double operator()(double d2) const {
+    if(d2 >= radius_ * radius_) return 0.;
+    if(kind_ == Weight_kind::GAUSSIAN) return std::exp(-d2 * inv_h2_);
+    const double t = std::sqrt(d2) * inv_r_;
+    const double s = 1. - t;
+    const double s2 = s * s;
+    return s2 * s2 * (4. * t + 1.);
+  }
+
+private:
+  Weight_kind kind_;
+  double h_, inv_h2_, radius_, inv_r_;
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_WEIGHT_FUNCTION_H

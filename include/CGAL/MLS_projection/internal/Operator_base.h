@@ -1,0 +1,147 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// What every projection operator shares: the sample set, the bandwidth and weight,
+// the initial frame from a weighted PCA, the orientation of normals and the assembly
+// of results (including the failure results that never hold a NaN).
+
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
+
+#include <CGAL/MLS_projection/Projection_options.h>
+#include <CGAL/MLS_projection/Projection_result.h>
+#include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/Weight_function.h>
+#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/Neighborhood.h>
+#include <CGAL/MLS_projection/internal/weighted_pca.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace MLS {
+namespace internal {
+
+template <class T> struct is_shared_ptr : std::false_type {};
+template <class T> struct is_shared_ptr<std::shared_ptr<T>> : std::true_type {};
+
+template <class GeomTraits, int D>
+class Operator_base {
+public:
+  using Geom_traits = GeomTraits;
+  using FT = typename GeomTraits::FT;
+  using Point = typename Kernel_types<GeomTraits, D>::Point;
+  using Vector = typename Kernel_types<GeomTraits, D>::Vector;
+  using Samples = Sample_set<GeomTraits, D>;
+  using Result = Projection_result<GeomTraits, D>;
+  static constexpr int dimension = D;
+
+  Operator_base(std::shared_ptr<const Samples> samples, const Projection_options& options)
+    : samples_(std::move(samples)), options_(options),
+      k_(options.k > 0 ? std::size_t(options.k) : std::size_t(D == 2 ? 6 : 16)),
+      h_(options.bandwidth > 0 ? options.bandwidth : samples_->mean_kth_neighbor_distance(k_)),
+      weight_(options.weight, h_ > 0 && std::isfinite(h_) ? h_ : 1.,
+              options.weight == Weight_kind::GAUSSIAN ? options.gaussian_cutoff : options.wendland_support) {}
+
+  /// The bandwidth \f$h\f$ in use (0 when it could not be derived: all points equal, or fewer than two).
+  double bandwidth() const { return has_bandwidth() ? h_ : 0.; }
+  /// The number of neighbours of the initial PCA and of the derivation of \f$h\f$.
+  std::size_t number_of_neighbors() const { return k_; }
+  const Weight_function& weight() const { return weight_; }
+  const Projection_options& options() const { return options_; }
+  const Samples& samples() const { return *samples_; }
+  const std::shared_ptr<const Samples>& shared_samples() const { return samples_; }
+
+protected:
+  bool has_bandwidth() const { return h_ > 0 && std::isfinite(h_); }
+  /// Radius gathered around a frame origin: the weight's support plus a margin of one h,
+  /// within which the origin may move before the neighbourhood is gathered again.
+  double gather_radius() const { return weight_.support_radius() + h_; }
+
+  struct Initial_frame {
+    Vec<D> origin, normal;
+    Pca<D> pca;
+    Projection_status status = Projection_status::CONVERGED;
+  };
+
+  /// Weighted PCA of the `k` nearest neighbours of `r` (Gaussian weights of bandwidth h,
+  /// relative to the nearest neighbour so that far queries do not underflow); the frame
+  /// origin is `r` projected on the PCA plane.
+  Initial_frame initial_frame(const Vec<D>& r, std::size_t minimum_points) const {
+    Initial_frame f;
+    if(samples_->size() < minimum_points) {
+      f.status = Projection_status::TOO_FEW_NEIGHBORS;
+      return f;
+    }
+    std::vector<std::size_t> idx;
+    samples_->k_nearest(r, (std::max)(k_, minimum_points), idx);
+    std::vector<Vec<D>> p(idx.size());
+    std::vector<double> w(idx.size());
+    double dmin = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < idx.size(); ++i) {
+      p[i] = samples_->local_point(idx[i]);
+      w[i] = (p[i] - r).squaredNorm();
+      dmin = (std::min)(dmin, w[i]);
+    }
+    const double scale = has_bandwidth() ? 1. / (h_ * h_) : 0.;
+    for(double& wi : w) wi = std::exp(-(wi - dmin) * scale);
+    f.pca = weighted_pca<D>(p, w);
+    if(!has_bandwidth() || !f.pca.valid || f.pca.is_degenerate()) {
+      f.status = Projection_status::DEGENERATE_NEIGHBORHOOD;
+      return f;
+    }
+    f.normal = f.pca.minor_axis();
+    f.origin = r + (f.pca.centroid - r).dot(f.normal) * f.normal;
+    return f;
+  }
+
+  /// The sign the normal `n` of a local fit at `q` must have: agreeing with the weighted
+  /// input normals when there are some, else pointing away from the centroid of the input.
+  double orientation(const Vec<D>& q, const Vec<D>& n, const Neighborhood<D>& nbh) const {
+    if(samples_->has_normals()) {
+      double s = 0;
+      for(std::size_t i = 0; i < nbh.size(); ++i)
+        s += weight_((nbh.points[i] - q).squaredNorm()) * samples_->local_normal(nbh.indices[i]).dot(n);
+      if(s != 0) return s > 0 ? 1. : -1.;
+    }
+    return q.dot(n) < 0 ? -1. : 1.;
+  }
+
+  Result failure(const Point& query, Projection_status status) const {
+    Result res;
+    res.point = query;
+    res.normal = NULL_VECTOR;
+    res.frame.origin = query;
+    res.frame.normal = NULL_VECTOR;
+    for(auto& t : res.frame.tangents) t = NULL_VECTOR;
+    res.status = status;
+    return res;
+  }
+
+  /// Fills the geometric fields of `res` from local coordinates.
+  void set_geometry(Result& res, const Vec<D>& point, const Vec<D>& normal, const Vec<D>& origin,
+                    const Vec<D>& frame_normal, const std::array<Vec<D>, D - 1>& tangents) const {
+    using KT = Kernel_types<GeomTraits, D>;
+    res.point = samples_->to_world(point);
+    res.normal = KT::to_vector(normal);
+    res.frame.origin = samples_->to_world(origin);
+    res.frame.normal = KT::to_vector(frame_normal);
+    for(int j = 0; j < D - 1; ++j) res.frame.tangents[j] = KT::to_vector(tangents[j]);
+  }
+
+  std::shared_ptr<const Samples> samples_;
+  Projection_options options_;
+  std::size_t k_;
+  double h_;
+  Weight_function weight_;
+};
+
+} // namespace internal
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
