@@ -4,6 +4,7 @@
 #ifndef CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H
 #define CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H
 
+#include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
 #include <cstddef>
@@ -17,6 +18,7 @@ namespace MLS {
 /// (the projection of the query onto the optimal plane).
 ///
 /// \cgalModels `MLSGraphFunctionSpace`
+/// \cgalModels `MLSFunctionSpace`
 /// \tparam D the ambient dimension, 2 or 3
 template <int D>
 class Plane_function_space {
@@ -37,6 +39,20 @@ public:
   double height(const Parameters&, const Domain_point&) const { return 0.; }
   /// \f$\nabla f(u)\f$
   Domain_point gradient(const Parameters&, const Domain_point&) const { return Domain_point::Zero(); }
+
+  /// The only member, \f$f = 0\f$ (no parameters).
+  Parameters identity() const { return Parameters(); }
+
+  /// The orthogonal projection of `x` (frame coordinates) onto the hyperplane \f$x_D = 0\f$:
+  /// normal \f$e_D\f$, signed distance \f$x_D\f$, never singular.
+  Closest_point<D> closest_point(const Parameters&, const internal::Vec<D>& x) const {
+    Closest_point<D> cp;
+    cp.point = x;
+    cp.point[D - 1] = 0.;
+    cp.normal = internal::Vec<D>::Unit(D - 1);
+    cp.signed_distance = x[D - 1];
+    return cp;
+  }
 };
 
 } // namespace MLS

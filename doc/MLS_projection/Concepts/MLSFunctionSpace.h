@@ -1,0 +1,80 @@
+/*!
+\ingroup PkgMLSProjectionConcepts
+\cgalConcept
+
+The concept `MLSFunctionSpace` describes a finite-dimensional family \f$\mathcal{F}\f$ of local
+curves (\f$D = 2\f$) or surfaces (\f$D = 3\f$), placed in a local reference frame, onto which
+points can be projected exactly: the closest-point projection \f$C_f(x)\f$ of the unified MLS
+projection \f$\mathcal{P}_U\f$ (equation 6 of the paper). Its members may be graphs of smooth
+functions (`Quadratic_function_space`) or non-smooth sets such as fans of planar wedges
+(`Wedge_fan_function_space`), whose creases and apexes the operator then reconstructs exactly.
+
+Everything is in <em>frame coordinates</em>: a point \f$x \in \mathbb{R}^D\f$ whose first
+\f$D-1\f$ coordinates lie in the frame's tangent hyperplane and whose last coordinate is the
+height along the frame normal \f$e_D\f$. Every member contains the frame origin.
+
+The operator calls `closest_point()` for every neighbour at every evaluation of its energy, and
+its Levenberg-Marquardt optimiser differentiates the residuals numerically; hence the residual
+is the <em>signed</em> distance, continuous across the surface, and `closest_point()` must be
+fast (no heap allocation, fixed-size Eigen types), deterministic, and return finite values for
+any finite input. A model is a small class, cheap to copy; all member functions are `const`
+and thread-safe.
+
+\cgalHasModel `CGAL::MLS::Plane_function_space<D>`
+\cgalHasModel `CGAL::MLS::Quadratic_function_space<D>`
+\cgalHasModel `CGAL::MLS::Wedge_fan_function_space<D, N>`
+
+\sa `CGAL::MLS::Closest_point<D>`
+\sa `MLSGraphFunctionSpace`
+*/
+class MLSFunctionSpace
+{
+public:
+
+/// \name Types and constants
+/// @{
+
+/// The ambient dimension \f$D\f$, 2 or 3.
+static constexpr int ambient_dimension;
+
+/// The number \f$P\f$ of parameters of a member (0 for the plane, 1 and 3 for the quadratic
+/// spaces in 2D and 3D, 2 and \f$2N\f$ for the fans).
+static constexpr int number_of_parameters;
+
+/// The parameters of a member: `Eigen::Matrix<double, number_of_parameters, 1>`. Their
+/// meaning is documented by each model. Any finite value is a valid member (the optimiser
+/// moves them freely).
+typedef unspecified_type Parameters;
+
+/// @}
+
+/// \name Operations
+/// @{
+
+/// A short name of the space, for messages and command-line options.
+static const char* name();
+
+/// The fewest neighbours a fit needs: the number of parameters of the member plus those of
+/// the frame, for the models of this package.
+static constexpr std::size_t minimum_number_of_points();
+
+/// The member \f$f = 0\f$, whose closest-point projection is the orthogonal projection on the
+/// frame's hyperplane (empty for `Plane_function_space`).
+Parameters identity() const;
+
+/// An initial member for the optimiser, from a weighted linear least-squares fit of the `n`
+/// points `p[0..n-1]` (frame coordinates, `Eigen::Matrix<double, D, 1>`) with non-negative
+/// weights `w[0..n-1]`. Terms that a move of the frame generates (offsets, and slopes for
+/// the quadratic spaces) may be dropped. Must return finite parameters for any input.
+Parameters fit(const Eigen::Matrix<double, D, 1>* p, const double* w, std::size_t n) const;
+
+/// The closest point of `x` (frame coordinates) on the member `c`, with the unit normal
+/// there (oriented "up", towards \f$+e_D\f$ for a graph; the normalised sum of the adjacent
+/// faces' normals at a crease or apex), the signed distance (positive on the side of the
+/// normal), and whether the point is singular (with the crease direction in 3D). See
+/// `CGAL::MLS::Closest_point<D>`.
+CGAL::MLS::Closest_point<D> closest_point(const Parameters& c, const Eigen::Matrix<double, D, 1>& x) const;
+
+/// @}
+
+}; /* end MLSFunctionSpace */

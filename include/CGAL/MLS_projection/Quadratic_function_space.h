@@ -1,0 +1,333 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H
+#define CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H
+
+#include <CGAL/MLS_projection/Closest_point.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/internal/Dimension.h>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/Polynomials>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+
+namespace CGAL {
+namespace MLS {
+namespace internal {
+
+/// The real roots of the depressed cubic \f$t^3 + pt + q = 0\f$ in closed form (one, or three
+/// when the discriminant allows), written in `t`; returns their number. The hyperbolic and
+/// trigonometric forms are used instead of Cardano's radicals: they involve no cancellation
+/// (in particular for \f$|p| \gg |q|\f$) and no cube of `p`, so they do not overflow.
+inline int depressed_cubic_real_roots(double p, double q, double t[3]) {
+  if(p == 0.) {
+    t[0] = std::cbrt(-q);
+    return 1;
+  }
+  if(p > 0.) {
+    t[0] = -2. * std::sqrt(p / 3.) * std::sinh(std::asinh(1.5 * q / p * std::sqrt(3. / p)) / 3.);
+    return 1;
+  }
+  const double m = std::sqrt(-p / 3.);
+  const double arg = 1.5 * q / p * std::sqrt(-3. / p); // cos(3 phi) in the trigonometric form
+  if(std::abs(arg) <= 1. + 1e-12) {                    // three real roots (two may coincide)
+    const double phi = std::acos(std::clamp(arg, -1., 1.)) / 3.;
+    for(int k = 0; k < 3; ++k) t[k] = 2. * m * std::cos(phi - 2. * M_PI * k / 3.);
+    return 3;
+  }
+  t[0] = (q > 0 ? -2. : 2.) * m * std::cosh(std::acosh(std::abs(arg)) / 3.);
+  return 1;
+}
+
+/// The stationary points of the squared distance from \f$(a, b)\f$ to the parabola
+/// \f$z = k x^2\f$, i.e. the real roots of \f$2k^2x^3 + (1 - 2kb)x - a = 0\f$, each polished with
+/// Newton steps; writes their abscissas to `x` and returns their number (1 to 3). The problem
+/// is first scaled to \f$\max(|a|,|b|) = 1\f$, so that any magnitude of `k`, `a`, `b` is handled.
+inline int parabola_stationary_points(double k, double a, double b, double x[3]) {
+  const double L = std::max(std::abs(a), std::abs(b));
+  if(k == 0. || L == 0. || !(L < HUGE_VAL)) { // the line, or the query at the vertex
+    x[0] = (k == 0.) ? a : 0.;
+    return 1;
+  }
+  const double K = k * L, A = a / L, B = b / L;
+  const double c3 = 2. * K * K, c1 = 1. - 2. * K * B, c0 = -A;
+  int n = 0;
+  const double p = c1 / c3, q = c0 / c3;
+  if(c3 > 0. && std::isfinite(p) && std::isfinite(q)) {
+    n = depressed_cubic_real_roots(p, q, x);
+  } else { // k = 0 or so small that the cubic term underflows: the linear equation.
+    x[0] = (c1 != 0.) ? A / c1 : A;
+    n = 1;
+  }
+  for(int i = 0; i < n; ++i) {
+    double X = x[i];
+    double g = (c3 * X * X + c1) * X + c0;
+    for(int it = 0; it < 3 && g != 0.; ++it) {
+      const double dg = 3. * c3 * X * X + c1;
+      if(dg == 0.) break;
+      const double Xn = X - g / dg;
+      const double gn = (c3 * Xn * Xn + c1) * Xn + c0;
+      if(!(std::abs(gn) < std::abs(g))) break;
+      X = Xn;
+      g = gn;
+    }
+    x[i] = X * L;
+  }
+  return n;
+}
+
+} // namespace internal
+
+/// \ingroup PkgMLSProjectionFunctionSpaces
+/// The quadratic function space of section 4.2 of the paper, in which the closest-point
+/// projection is computed exactly (the space of the unified projection with smooth priors).
+///
+/// - In 2D, \f$f(x) = k x^2\f$, one parameter \f$k\f$. The closest point of \f$(a, b)\f$ is a
+///   real root of the cubic \f$2k^2x^3 + (1 - 2kb)x - a = 0\f$, solved in closed form
+///   (trigonometric / hyperbolic form of the depressed cubic) and polished by Newton steps.
+/// - In 3D, \f$f(x, y) = a x'^2 + b y'^2\f$ with \f$x' = x\cos\theta + y\sin\theta\f$ and
+///   \f$y' = -x\sin\theta + y\cos\theta\f$: parameters \f$(a, b, \theta)\f$, the principal
+///   curvatures (halved) and the angle of the first principal direction
+///   \f$(\cos\theta, \sin\theta)\f$. The angle is the extra rotation parameter of the paper,
+///   which makes the space closed under rotations of the frame about its normal. The closest
+///   point solves a quintic equation, whose roots are the eigenvalues of its companion matrix
+///   (`Eigen::PolynomialSolver`); the best candidate is polished by Newton's method.
+///
+/// Terms of degree at most 1 are left out: the unified operator moves the frame, which
+/// generates them.
+///
+/// \cgalModels `MLSFunctionSpace`
+/// \tparam D the ambient dimension, 2 or 3
+template <int D>
+class Quadratic_function_space {
+  static_assert(D == 2 || D == 3, "Quadratic_function_space: D must be 2 or 3");
+
+public:
+  static constexpr int ambient_dimension = D;
+  static constexpr int number_of_parameters = (D == 2) ? 1 : 3;
+  using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
+  using Domain_point = internal::Vec<D - 1>;
+
+  static const char* name() { return "quadratic"; }
+  /// The number of parameters of the member plus those of the frame (\f$D\f$).
+  static constexpr std::size_t minimum_number_of_points() { return number_of_parameters + D; }
+
+  /// The member \f$f = 0\f$ (\f$\theta = 0\f$ in 3D).
+  Parameters identity() const { return Parameters::Zero(); }
+
+  /// The initial member: the quadratic part of the weighted least-squares fit by a full
+  /// quadratic polynomial (`Polynomial_function_space<D>`); the lower-order terms are dropped
+  /// since the operator also optimises the frame. In 3D, \f$(a, b, \theta)\f$ come from the
+  /// eigen-decomposition of the Hessian \f$[[c_3, c_4/2], [c_4/2, c_5]]\f$.
+  Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
+    const auto c = Polynomial_function_space<D>().fit(p, w, n);
+    Parameters r;
+    if constexpr(D == 2) {
+      r[0] = c[2];
+    } else {
+      const double h00 = c[3], h01 = 0.5 * c[4], h11 = c[5];
+      const double theta = 0.5 * std::atan2(2. * h01, h00 - h11);
+      const double ct = std::cos(theta), st = std::sin(theta);
+      r[0] = h00 * ct * ct + 2. * h01 * ct * st + h11 * st * st;
+      r[1] = h00 * st * st - 2. * h01 * ct * st + h11 * ct * ct;
+      r[2] = theta;
+    }
+    if(!r.allFinite()) r.setZero();
+    return r;
+  }
+
+  /// \f$f(u)\f$ (not required by the concept).
+  double height(const Parameters& c, const Domain_point& u) const {
+    if constexpr(D == 2) {
+      return c[0] * u[0] * u[0];
+    } else {
+      const double ct = std::cos(c[2]), st = std::sin(c[2]);
+      const double xr = ct * u[0] + st * u[1], yr = -st * u[0] + ct * u[1];
+      return c[0] * xr * xr + c[1] * yr * yr;
+    }
+  }
+
+  /// The closest point of `x` (frame coordinates) on the graph of the member `c`.
+  Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
+    if constexpr(D == 2) return closest_point_2(c[0], x);
+    else return closest_point_3(c[0], c[1], c[2], x);
+  }
+
+private:
+  static Closest_point<2> closest_point_2(double k, const internal::Vec<2>& x) {
+    double roots[3];
+    const int n = internal::parabola_stationary_points(k, x[0], x[1], roots);
+    double best = HUGE_VAL, bx = x[0];
+    for(int i = 0; i < n; ++i) {
+      const double u = roots[i], dz = k * u * u - x[1], e = (u - x[0]) * (u - x[0]) + dz * dz;
+      if(e < best) {
+        best = e;
+        bx = u;
+      }
+    }
+    if(!std::isfinite(best)) bx = x[0]; // never reached for finite input; keeps the output finite
+    Closest_point<2> cp;
+    cp.point = internal::Vec<2>(bx, k * bx * bx);
+    cp.normal = internal::Vec<2>(-2. * k * bx, 1.).normalized();
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+
+  // Squared distance, in scaled coordinates, from (P, Q, R) to (X, Y, A X^2 + B Y^2).
+  static double energy(double A, double B, double P, double Q, double R, double X, double Y) {
+    const double S = A * X * X + B * Y * Y - R;
+    return (X - P) * (X - P) + (Y - Q) * (Y - Q) + S * S;
+  }
+
+  // Newton's method on the unconstrained problem min_(X,Y) energy, with step halving so that
+  // the energy never increases; stops at a point where the Hessian is not positive definite.
+  static double polish(double A, double B, double P, double Q, double R, double& X, double& Y) {
+    double E = energy(A, B, P, Q, R, X, Y);
+    for(int it = 0; it < 8; ++it) {
+      const double S = A * X * X + B * Y * Y - R;
+      const double g0 = (X - P) + 2. * A * X * S, g1 = (Y - Q) + 2. * B * Y * S;
+      const double h00 = 1. + 2. * A * S + 4. * A * A * X * X, h11 = 1. + 2. * B * S + 4. * B * B * Y * Y;
+      const double h01 = 4. * A * B * X * Y;
+      const double det = h00 * h11 - h01 * h01;
+      if(!(h00 > 0. && det > 0.)) break;
+      double dX = -(h11 * g0 - h01 * g1) / det, dY = -(h00 * g1 - h01 * g0) / det;
+      if(!(std::abs(dX) + std::abs(dY) > 1e-17 * (1. + std::abs(X) + std::abs(Y)))) break;
+      bool improved = false;
+      for(int h = 0; h < 4; ++h, dX *= 0.5, dY *= 0.5) {
+        const double En = energy(A, B, P, Q, R, X + dX, Y + dY);
+        if(En <= E) {
+          X += dX;
+          Y += dY;
+          E = En;
+          improved = true;
+          break;
+        }
+      }
+      if(!improved) break;
+    }
+    return E;
+  }
+
+  static Closest_point<3> closest_point_3(double a, double b, double theta, const internal::Vec<3>& x) {
+    const double ct = std::cos(theta), st = std::sin(theta);
+    const double p = ct * x[0] + st * x[1], q = -st * x[0] + ct * x[1], r = x[2];
+    // Scale to max(|p|, |q|, |r|) = 1: the polynomial coefficients are then of moderate size
+    // whatever the units, and all thresholds below are relative.
+    const double L = std::max({std::abs(p), std::abs(q), std::abs(r)});
+    Closest_point<3> cp;
+    if(L == 0. || !(L < HUGE_VAL)) { // x is the origin, which lies on every member
+      cp.point = internal::Vec<3>::Zero();
+      cp.normal = internal::Vec<3>::UnitZ();
+      return cp;
+    }
+    const double A = a * L, B = b * L, P = p / L, Q = q / L, R = r / L;
+
+    // Candidates (X, Y): the vertical projection, 3 from the cubic, up to 3 per quintic root.
+    constexpr int max_candidates = 24;
+    double cx[max_candidates], cy[max_candidates];
+    int nc = 0;
+    auto add = [&](double X, double Y) {
+      if(nc < max_candidates && std::isfinite(X) && std::isfinite(Y)) {
+        cx[nc] = X;
+        cy[nc] = Y;
+        ++nc;
+      }
+    };
+    add(P, Q); // the vertical projection, always a valid start
+    // The stationary points of the 2D problem of the dominant curvature (the other one set
+    // to 0): exact when the other one is 0, and good starts when it is small.
+    {
+      double roots[3];
+      if(std::abs(A) >= std::abs(B)) {
+        const int n = internal::parabola_stationary_points(A, P, R - B * Q * Q, roots);
+        for(int i = 0; i < n; ++i) add(roots[i], Q);
+      } else {
+        const int n = internal::parabola_stationary_points(B, Q, R - A * P * P, roots);
+        for(int i = 0; i < n; ++i) add(P, roots[i]);
+      }
+    }
+    // Both curvatures significant: the quintic. With s = f - R, stationarity gives
+    // X = P / (1 + 2As), Y = Q / (1 + 2Bs) and s solves
+    //   A P^2 (1+2Bs)^2 + B Q^2 (1+2As)^2 - (R + s) (1+2As)^2 (1+2Bs)^2 = 0.
+    // As in the paper, its roots are the eigenvalues of the companion matrix (QR algorithm,
+    // Eigen::PolynomialSolver): all roots at once, robust to clustered and multiple roots
+    // (the case P = 0 or Q = 0 gives a double root), fixed-size and allocation-free, whereas
+    // bracketing the roots of a quintic by hand is fragile. Spurious or inaccurate roots are
+    // harmless: every candidate is evaluated on the surface and the best one is polished.
+    const double amax = std::max(std::abs(A), std::abs(B)), amin = std::min(std::abs(A), std::abs(B));
+    if(amin > 1e-6 * amax && amin > 1e-10) {
+      const double u[3] = {1., 4. * A, 4. * A * A}; // (1 + 2As)^2
+      const double v[3] = {1., 4. * B, 4. * B * B}; // (1 + 2Bs)^2
+      double uv[5] = {0, 0, 0, 0, 0};
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j) uv[i + j] += u[i] * v[j];
+      Eigen::Matrix<double, 6, 1> poly;
+      for(int i = 0; i < 6; ++i) poly[i] = 0.;
+      for(int i = 0; i < 3; ++i) poly[i] += A * P * P * v[i] + B * Q * Q * u[i];
+      for(int i = 0; i < 5; ++i) {
+        poly[i] -= R * uv[i];
+        poly[i + 1] -= uv[i];
+      }
+      poly /= poly.cwiseAbs().maxCoeff();
+      Eigen::PolynomialSolver<double, 5> solver;
+      solver.compute(poly);
+      const auto& roots = solver.roots();
+      for(int i = 0; i < 5; ++i) {
+        const double s = roots[i].real();
+        if(!std::isfinite(s) || std::abs(roots[i].imag()) > 1e-4 * (1. + std::abs(s))) continue;
+        const double d1 = 1. + 2. * A * s, d2 = 1. + 2. * B * s;
+        const bool x_ok = d1 != 0., y_ok = d2 != 0.;
+        const double X = x_ok ? P / d1 : 0., Y = y_ok ? Q / d2 : 0.;
+        if(x_ok && y_ok) add(X, Y);
+        // A (nearly) vanishing denominator, when P or Q is (nearly) 0 and the root is (nearly)
+        // double: the quotient is unreliable, and the coordinate comes from the constraint
+        // s + R = A X^2 + B Y^2 instead. Both variants are candidates.
+        if(std::abs(d1) < 1e-3) {
+          const double Xc = std::sqrt(std::max(0., (s + R - B * Y * Y) / A));
+          add(P < 0 ? -Xc : Xc, Y);
+        }
+        if(std::abs(d2) < 1e-3) {
+          const double Yc = std::sqrt(std::max(0., (s + R - A * X * X) / B));
+          add(X, Q < 0 ? -Yc : Yc);
+        }
+      }
+    }
+    // Polish the two best candidates, keep the better.
+    int i0 = -1, i1 = -1;
+    double e0 = HUGE_VAL, e1 = HUGE_VAL;
+    for(int i = 0; i < nc; ++i) {
+      const double e = energy(A, B, P, Q, R, cx[i], cy[i]);
+      if(e < e0) {
+        i1 = i0; e1 = e0;
+        i0 = i; e0 = e;
+      } else if(e < e1) {
+        i1 = i; e1 = e;
+      }
+    }
+    double X = cx[i0], Y = cy[i0];
+    e0 = polish(A, B, P, Q, R, X, Y);
+    if(i1 >= 0) {
+      double X1 = cx[i1], Y1 = cy[i1];
+      if(polish(A, B, P, Q, R, X1, Y1) < e0) {
+        X = X1;
+        Y = Y1;
+      }
+    }
+    const double xr = X * L, yr = Y * L;
+    const double gx = 2. * A * X, gy = 2. * B * Y; // gradient of f in the rotated frame
+    cp.point = internal::Vec<3>(ct * xr - st * yr, st * xr + ct * yr, (A * X * X + B * Y * Y) * L);
+    cp.normal = internal::Vec<3>(-(ct * gx - st * gy), -(st * gx + ct * gy), 1.).normalized();
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H

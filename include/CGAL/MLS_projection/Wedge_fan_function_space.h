@@ -1,0 +1,270 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_WEDGE_FAN_FUNCTION_SPACE_H
+#define CGAL_MLS_PROJECTION_WEDGE_FAN_FUNCTION_SPACE_H
+
+#include <CGAL/MLS_projection/Closest_point.h>
+#include <CGAL/MLS_projection/internal/Dimension.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionFunctionSpaces
+/// The space of piecewise-linear "fans" with apex at the frame origin, the non-smooth
+/// function space of section 4.2 of the paper, which reconstructs creases and corners.
+///
+/// - In 2D, two rays from the origin with directions \f$(\cos\theta_1, \sin\theta_1)\f$ and
+///   \f$(\cos\theta_2, \sin\theta_2)\f$: parameters \f$(\theta_1, \theta_2)\f$; the plane
+///   \f$x_2 = 0\f$ is \f$(0, \pi)\f$. The angles are taken modulo \f$2\pi\f$ in
+///   \f$[-\pi/2, 3\pi/2)\f$ (cut at the downward direction) and sorted: the curve goes in along
+///   the second ray and out along the first, and its "up" side is the sector swept
+///   counter-clockwise from the first ray to the second (the upper half-plane for the plane,
+///   the inside of a valley, the outside of a ridge). The normal of a ray is its direction
+///   rotated by \f$+\pi/2\f$ (first ray) or \f$-\pi/2\f$ (second ray).
+/// - In 3D, `N` unit vectors \f$v_i = (\cos\phi_i\cos\lambda_i, \cos\phi_i\sin\lambda_i,
+///   \sin\phi_i)\f$ given by their latitudes \f$\phi_i\f$ and longitudes \f$\lambda_i\f$, stored
+///   as \f$(\phi_0, \lambda_0, \phi_1, \lambda_1, \dots)\f$. After sorting the vectors by
+///   longitude (modulo \f$2\pi\f$), the surface is the union of the infinite triangles (cones)
+///   \f$\{\alpha v_i + \beta v_{i+1} : \alpha, \beta \geq 0\}\f$ of consecutive vectors,
+///   cyclically. As in the paper, the sort is explicit, so that the parameters are free.
+///   The normal of the cone \f$(v_i, v_{i+1})\f$ is \f$v_i \times v_{i+1}\f$ normalised, which
+///   points up (positive \f$e_3\f$ component) when the longitude gap \f$\lambda_{i+1} - \lambda_i\f$
+///   is below \f$\pi\f$; it is reversed for a gap above \f$\pi\f$, whose cone spans the short way.
+///   The plane \f$x_3 = 0\f$ is all latitudes 0 (identity() spreads the longitudes evenly).
+///
+/// Representable shapes, with `N = 4`: a plane; an edge of any dihedral angle (\f$v_0\f$ and
+/// \f$v_2\f$ opposite along the crease, \f$v_1\f$ and \f$v_3\f$ in the two faces: two
+/// consecutive coplanar cones make one half-plane); a corner of three faces, e.g. a cube
+/// corner (the three edge directions, and a fourth vector inside one of the faces, so that
+/// its two cones are coplanar and make that face).
+///
+/// A point is singular when its closest point is on a ray (a crease, `direction` = the ray),
+/// unless the two cones meeting there are coplanar (normals within \f$10^{-9}\f$), or at the
+/// apex (unless all cones are coplanar).
+///
+/// \cgalModels `MLSFunctionSpace`
+/// \tparam D the ambient dimension, 2 or 3
+/// \tparam N the number of vectors of the fan in 3D (at least 3; ignored in 2D)
+template <int D, int N = 4>
+class Wedge_fan_function_space {
+  static_assert(D == 2 || D == 3, "Wedge_fan_function_space: D must be 2 or 3");
+  static_assert(D == 2 || N >= 3, "Wedge_fan_function_space: N must be at least 3");
+
+public:
+  static constexpr int ambient_dimension = D;
+  static constexpr int number_of_vectors = (D == 2) ? 2 : N;
+  static constexpr int number_of_parameters = (D == 2) ? 2 : 2 * N;
+  using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
+
+  /// The tolerance on the normals of two adjacent cones under which they are one plane.
+  static constexpr double coplanarity_tolerance = 1e-9;
+
+  static const char* name() { return "wedge_fan"; }
+  /// The number of parameters of the member plus those of the frame (\f$D\f$).
+  static constexpr std::size_t minimum_number_of_points() { return number_of_parameters + D; }
+
+  /// The plane \f$x_D = 0\f$: \f$(0, \pi)\f$ in 2D; in 3D, latitudes 0 and longitudes
+  /// \f$2\pi i / N\f$.
+  Parameters identity() const {
+    Parameters c;
+    if constexpr(D == 2) {
+      c << 0., M_PI;
+    } else {
+      for(int i = 0; i < N; ++i) {
+        c[2 * i] = 0.;
+        c[2 * i + 1] = 2. * M_PI * i / N;
+      }
+    }
+    return c;
+  }
+
+  /// The initial member: the plane through the apex parallel to the weighted least-squares
+  /// line \f$z = c_0 + c_1x\f$ (2D) or plane \f$z = c_0 + c_1x + c_2y\f$ (3D) of the points,
+  /// with the vectors spread evenly in longitude (\f$2\pi i/N\f$) on it (the paper's initial
+  /// estimate). The offset \f$c_0\f$ is dropped: the operator moves the frame.
+  Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
+    using M = Eigen::Matrix<double, D, D>;
+    using V = Eigen::Matrix<double, D, 1>;
+    M A = M::Zero();
+    V b = V::Zero();
+    for(std::size_t i = 0; i < n; ++i) {
+      if(!(w[i] > 0)) continue;
+      V m;
+      m[0] = 1.;
+      for(int j = 0; j + 1 < D; ++j) m[j + 1] = p[i][j];
+      A.noalias() += w[i] * m * m.transpose();
+      b.noalias() += w[i] * p[i][D - 1] * m;
+    }
+    Eigen::CompleteOrthogonalDecomposition<M> cod(A);
+    cod.setThreshold(1e-12);
+    V c = cod.solve(b);
+    if(!c.allFinite()) c.setZero();
+    Parameters r;
+    if constexpr(D == 2) {
+      r << std::atan(c[1]), M_PI + std::atan(c[1]);
+    } else {
+      for(int i = 0; i < N; ++i) {
+        const double lon = 2. * M_PI * i / N;
+        r[2 * i] = std::atan(c[1] * std::cos(lon) + c[2] * std::sin(lon));
+        r[2 * i + 1] = lon;
+      }
+    }
+    return r;
+  }
+
+  /// The unit vector of latitude `lat` and longitude `lon`.
+  static internal::Vec<3> direction(double lat, double lon) {
+    const double cl = std::cos(lat);
+    return internal::Vec<3>(cl * std::cos(lon), cl * std::sin(lon), std::sin(lat));
+  }
+
+  /// The closest point of `x` (frame coordinates) on the fan `c`.
+  Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
+    if constexpr(D == 2) return closest_point_2(c, x);
+    else return closest_point_3(c, x);
+  }
+
+private:
+  static double wrap(double t, double lo) { // t modulo 2 pi, in [lo, lo + 2 pi)
+    double r = t - 2. * M_PI * std::floor((t - lo) / (2. * M_PI));
+    if(r >= lo + 2. * M_PI) r -= 2. * M_PI; // rounding
+    return r;
+  }
+
+  static Closest_point<2> closest_point_2(const Parameters& c, const internal::Vec<2>& x) {
+    double ta = wrap(c[0], -M_PI / 2), tb = wrap(c[1], -M_PI / 2);
+    if(tb < ta) std::swap(ta, tb);
+    const internal::Vec<2> da(std::cos(ta), std::sin(ta)), db(std::cos(tb), std::sin(tb));
+    const internal::Vec<2> na(-da[1], da[0]), nb(db[1], -db[0]);
+    const double sa = std::max(0., x.dot(da)), sb = std::max(0., x.dot(db));
+    const double ea = (x - sa * da).squaredNorm(), eb = (x - sb * db).squaredNorm();
+    Closest_point<2> cp;
+    const bool a_wins = ea <= eb;
+    const double s = a_wins ? sa : sb;
+    if(s > 0.) {
+      cp.point = a_wins ? internal::Vec<2>(sa * da) : internal::Vec<2>(sb * db);
+      cp.normal = a_wins ? na : nb;
+    } else { // the apex
+      cp.point = internal::Vec<2>::Zero();
+      const bool flat = std::abs(na[0] * nb[1] - na[1] * nb[0]) <= coplanarity_tolerance && na.dot(nb) > 0;
+      cp.is_singular = !flat;
+      const internal::Vec<2> sum = na + nb;
+      const double len = sum.norm();
+      cp.normal = (len > 1e-12) ? internal::Vec<2>(sum / len) : na;
+    }
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+
+  static Closest_point<3> closest_point_3(const Parameters& c, const internal::Vec<3>& x) {
+    using V3 = internal::Vec<3>;
+    // Sort the vectors by longitude modulo 2 pi (insertion sort: N is small).
+    std::array<double, N> lon;
+    std::array<int, N> order;
+    for(int i = 0; i < N; ++i) {
+      lon[i] = wrap(c[2 * i + 1], 0.);
+      order[i] = i;
+    }
+    for(int i = 1; i < N; ++i)
+      for(int j = i; j > 0 && lon[order[j]] < lon[order[j - 1]]; --j) std::swap(order[j], order[j - 1]);
+    std::array<V3, N> v;   // sorted vectors
+    std::array<V3, N> fn;  // normal of cone j = (v[j], v[j+1]), zero if degenerate
+    std::array<bool, N> ok;
+    for(int j = 0; j < N; ++j) v[j] = direction(c[2 * order[j]], c[2 * order[j] + 1]);
+    for(int j = 0; j < N; ++j) {
+      const int k = (j + 1) % N;
+      double gap = lon[order[k]] - lon[order[j]];
+      if(k == 0) gap += 2. * M_PI;
+      V3 n = v[j].cross(v[k]);
+      const double len = n.norm();
+      ok[j] = len > 1e-12;
+      fn[j] = ok[j] ? V3(((gap > M_PI) ? -1. : 1.) * n / len) : V3::Zero();
+    }
+    auto coplanar = [&](int i, int j) {
+      return ok[i] && ok[j] && fn[i].dot(fn[j]) > 0 && fn[i].cross(fn[j]).norm() <= coplanarity_tolerance;
+    };
+
+    // Nearest piece: 0 = apex, 1 = interior of cone `which`, 2 = ray `which`.
+    int kind = 0, which = -1;
+    double best = x.squaredNorm();
+    V3 point = V3::Zero();
+    for(int j = 0; j < N; ++j) {
+      if(!ok[j]) continue;
+      const int k = (j + 1) % N;
+      const double cjk = v[j].dot(v[k]), rj = x.dot(v[j]), rk = x.dot(v[k]);
+      const double det = 1. - cjk * cjk;
+      if(!(det > 0.)) continue;
+      const double alpha = (rj - cjk * rk) / det, beta = (rk - cjk * rj) / det;
+      if(alpha < 0. || beta < 0.) continue;
+      const V3 y = alpha * v[j] + beta * v[k];
+      const double e = (x - y).squaredNorm();
+      if(e < best) {
+        best = e;
+        point = y;
+        kind = 1;
+        which = j;
+      }
+    }
+    for(int j = 0; j < N; ++j) {
+      const double t = x.dot(v[j]);
+      if(!(t > 0.)) continue;
+      const V3 y = t * v[j];
+      const double e = (x - y).squaredNorm();
+      if(e < best) {
+        best = e;
+        point = y;
+        kind = 2;
+        which = j;
+      }
+    }
+
+    Closest_point<3> cp;
+    cp.point = point;
+    if(kind == 1) {
+      cp.normal = fn[which];
+    } else if(kind == 2) {
+      const int prev = (which + N - 1) % N;
+      if(coplanar(prev, which)) {
+        cp.normal = fn[which];
+      } else {
+        cp.is_singular = true;
+        cp.direction = v[which];
+        cp.normal = fn[prev] + fn[which];
+      }
+    } else {
+      // The apex: sum the normals of the distinct faces (a run of coplanar cones is one face).
+      V3 sum = V3::Zero();
+      int first = -1;
+      bool all_coplanar = true;
+      for(int j = 0; j < N; ++j) {
+        if(!ok[j]) continue;
+        if(first < 0) first = j;
+        else if(!coplanar(first, j)) all_coplanar = false;
+        if(!coplanar((j + N - 1) % N, j)) sum += fn[j];
+      }
+      if(first >= 0 && all_coplanar) {
+        cp.normal = fn[first];
+      } else {
+        cp.is_singular = true;
+        cp.normal = sum;
+      }
+    }
+    const double len = cp.normal.norm();
+    if(len > 1e-12) cp.normal /= len;
+    else cp.normal = V3::UnitZ(); // degenerate fan (e.g. all vectors parallel): any unit normal
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_WEDGE_FAN_FUNCTION_SPACE_H
