@@ -13,7 +13,11 @@
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Closest_point.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #endif // CGAL_MLS_PROJECTION_H

@@ -442,12 +442,18 @@ MLS_TEST(wedge_2_plane_and_orientation) {
     MLS_CHECK(apex.is_singular && apex.point == V2::Zero());
     MLS_CHECK_NEAR((apex.normal - V2(0, 1)).norm(), 0., 1e-15);
   }
-  // fit to a line
-  std::vector<V2> p;
-  std::vector<double> w;
-  for(int i = 0; i < 20; ++i) { const double s = u(g); p.emplace_back(s, 0.3 * s + 0.5); w.push_back(1.); }
-  const Eigen::Vector2d c = fs.fit(p.data(), w.data(), p.size());
-  for(const V2& q : p) MLS_CHECK_NEAR(fs.closest_point(c, q - V2(0, 0.5)).signed_distance, 0., 1e-14);
+  // the initial member (sector fit, apex at the origin) reproduces a line and a wedge through it
+  for(const double slope_right : {0.3, -1.2}) {
+    std::vector<V2> p;
+    std::vector<double> w;
+    for(int i = 0; i < 20; ++i) {
+      const double s = u(g);
+      p.emplace_back(s, s > 0 ? slope_right * s : 0.3 * s);
+      w.push_back(1.);
+    }
+    const Eigen::Vector2d c = fs.fit(p.data(), w.data(), p.size());
+    for(const V2& q : p) MLS_CHECK_NEAR(fs.closest_point(c, q).signed_distance, 0., 1e-14);
+  }
 }
 
 // ---------------------------------------------------------------- 3D fan
@@ -656,21 +662,31 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
   // on the axis: the apex of a flat fan is a smooth point
   const auto ca = fs.closest_point(fs.identity(), V3(0, 0, -1));
   MLS_CHECK(!ca.is_singular && ca.point.norm() == 0 && ca.signed_distance == -1);
-  // fit to a tilted plane, then points of the plane are on the fan
+  // the initial member (apex at the origin) reproduces a tilted plane through the origin
   std::vector<V3> p;
   std::vector<double> w;
-  for(int i = 0; i < 30; ++i) {
+  for(int i = 0; i < 60; ++i) {
     const double a = u(g), b = u(g);
-    p.emplace_back(a, b, 0.4 * a - 0.7 * b + 0.2);
+    p.emplace_back(a, b, 0.4 * a - 0.7 * b);
     w.push_back(1. + 0.5 * u(g));
   }
   const auto c = fs.fit(p.data(), w.data(), p.size());
   for(const V3& q : p) {
-    const auto cp = fs.closest_point(c, q - V3(0, 0, 0.2));
+    const auto cp = fs.closest_point(c, q);
     MLS_CHECK_NEAR(cp.signed_distance, 0., 1e-14);
     MLS_CHECK(!cp.is_singular);
     MLS_CHECK_NEAR((cp.normal - V3(-0.4, 0.7, 1).normalized()).norm(), 0., 1e-12);
   }
+  // and follows an edge along the first axis: the faces' sectors are exact
+  p.clear();
+  w.assign(400, 1.);
+  for(int i = 0; i < 400; ++i) {
+    const double a = u(g), b = u(g);
+    p.emplace_back(a, b, b > 0 ? 0.4 * b : -0.7 * b);
+  }
+  const auto ce = fs.fit(p.data(), w.data(), p.size());
+  MLS_CHECK_NEAR(std::tan(ce[2]), 0.4, 1e-12);  // the sector around +y
+  MLS_CHECK_NEAR(std::tan(ce[6]), 0.7, 1e-12);  // the sector around -y
   // sign flips across each face of a random fan
   Eigen::Matrix<double, 8, 1> cr;
   cr << 0.3, 0.1, -0.4, 1.9, 0.2, 3.3, 0.5, 4.9;

@@ -53,6 +53,12 @@ public:
     cp.signed_distance = x[D - 1];
     return cp;
   }
+
+  /// The point of the graph above or below `x` (for `Single_phase_projection`): here the same
+  /// as `closest_point()`.
+  Closest_point<D> vertical_projection(const Parameters& c, const internal::Vec<D>& x) const {
+    return closest_point(c, x);
+  }
 };
 
 } // namespace MLS

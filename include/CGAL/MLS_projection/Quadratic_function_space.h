@@ -152,6 +152,40 @@ public:
     }
   }
 
+  /// The largest curvature \f$2|k|\f$ (2D) or \f$2\max(|a|, |b|)\f$ (3D) of a plausible member, in
+  /// units of \f$1/h\f$: 8 by default, a radius of curvature of at least \f$h/8\f$. Sharper
+  /// members (needle-like parabolas threading noisy samples) are penalised by `regularization()`.
+  double maximum_curvature = 8.;
+
+  /// A dimensionless penalty, zero for members whose curvature is at most
+  /// `maximum_curvature / h`, growing linearly beyond (added to the energy by the operators).
+  double regularization(const Parameters& c, double h) const {
+    double k = 2. * std::abs(c[0]);
+    if constexpr(D == 3) k = (std::max)(k, 2. * std::abs(c[1]));
+    const double excess = k * h - maximum_curvature;
+    return excess > 0 ? excess : 0.;
+  }
+
+  /// The point \f$(u, f(u))\f$ of the graph above or below `x = (u, z)`, with its normal
+  /// (for `Single_phase_projection`).
+  Closest_point<D> vertical_projection(const Parameters& c, const internal::Vec<D>& x) const {
+    Closest_point<D> cp;
+    const Domain_point u = x.template head<D - 1>();
+    cp.point << u, height(c, u);
+    internal::Vec<D> g;
+    if constexpr(D == 2) {
+      g << -2. * c[0] * u[0], 1.;
+    } else {
+      const double ct = std::cos(c[2]), st = std::sin(c[2]);
+      const double xr = ct * u[0] + st * u[1], yr = -st * u[0] + ct * u[1];
+      const double gx = 2. * c[0] * xr, gy = 2. * c[1] * yr; // gradient in the rotated axes
+      g << -(ct * gx - st * gy), -(st * gx + ct * gy), 1.;
+    }
+    cp.normal = g.normalized();
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+
   /// The closest point of `x` (frame coordinates) on the graph of the member `c`.
   Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
     if constexpr(D == 2) return closest_point_2(c[0], x);

@@ -85,35 +85,74 @@ public:
     return c;
   }
 
-  /// The initial member: the plane through the apex parallel to the weighted least-squares
-  /// line \f$z = c_0 + c_1x\f$ (2D) or plane \f$z = c_0 + c_1x + c_2y\f$ (3D) of the points,
-  /// with the vectors spread evenly in longitude (\f$2\pi i/N\f$) on it (the paper's initial
-  /// estimate). The offset \f$c_0\f$ is dropped: the operator moves the frame.
+  /// Whether the closest point can be singular: the operators then add starts at creases
+  /// and apices proposed from the neighbourhood.
+  static constexpr bool has_sharp_features = true;
+  /// The vectors are free on the circle or sphere, so every rotation of the frame is a member:
+  /// the operators optimise the frame origin only.
+  static constexpr bool is_rotation_invariant = true;
+
+  /// The initial member from the points `p` (frame coordinates) with weights `w`, the apex at
+  /// the frame origin. 2D: each ray gets the weighted mean slope of the points on its side
+  /// (\f$x > 0\f$, \f$x < 0\f$), so a line or a wedge through the origin is reproduced exactly. 3D:
+  /// each vector, at the longitudes \f$2\pi i/N\f$ (the paper's even spread), gets the elevation
+  /// of the weighted least-squares plane through the apex of the points of its sector
+  /// (longitudes within \f$\pi/N\f$), or of all points when the sector has too few: a plane through
+  /// the origin is reproduced exactly (zero latitudes for a level one, the paper's initial
+  /// estimate), and an edge through the origin along the first axis approximately.
   Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
-    using M = Eigen::Matrix<double, D, D>;
-    using V = Eigen::Matrix<double, D, 1>;
+    // the least-squares plane through the origin, z = g . u
+    using M = Eigen::Matrix<double, D - 1, D - 1>;
+    using U = Eigen::Matrix<double, D - 1, 1>;
     M A = M::Zero();
-    V b = V::Zero();
+    U b = U::Zero();
     for(std::size_t i = 0; i < n; ++i) {
       if(!(w[i] > 0)) continue;
-      V m;
-      m[0] = 1.;
-      for(int j = 0; j + 1 < D; ++j) m[j + 1] = p[i][j];
-      A.noalias() += w[i] * m * m.transpose();
-      b.noalias() += w[i] * p[i][D - 1] * m;
+      const U u = p[i].template head<D - 1>();
+      A.noalias() += w[i] * u * u.transpose();
+      b.noalias() += w[i] * p[i][D - 1] * u;
     }
     Eigen::CompleteOrthogonalDecomposition<M> cod(A);
     cod.setThreshold(1e-12);
-    V c = cod.solve(b);
-    if(!c.allFinite()) c.setZero();
+    U g = cod.solve(b);
+    if(!g.allFinite()) g.setZero();
+
     Parameters r;
     if constexpr(D == 2) {
-      r << std::atan(c[1]), M_PI + std::atan(c[1]);
+      for(int side = 0; side < 2; ++side) { // side 0: x > 0 (first ray), side 1: x < 0
+        double sx = 0, sz = 0;
+        for(std::size_t i = 0; i < n; ++i)
+          if(w[i] > 0 && (side == 0 ? p[i][0] > 0 : p[i][0] < 0)) {
+            sx += w[i] * std::abs(p[i][0]);
+            sz += w[i] * p[i][1];
+          }
+        const double slope = sx > 0 ? sz / sx : (side == 0 ? g[0] : -g[0]);
+        r[side] = side == 0 ? std::atan(slope) : M_PI - std::atan(slope);
+      }
     } else {
-      for(int i = 0; i < N; ++i) {
-        const double lon = 2. * M_PI * i / N;
-        r[2 * i] = std::atan(c[1] * std::cos(lon) + c[2] * std::sin(lon));
-        r[2 * i + 1] = lon;
+      for(int k = 0; k < N; ++k) {
+        // the least-squares plane through the apex of the points of the sector
+        const double lon = 2. * M_PI * k / N;
+        M As = M::Zero();
+        U bs = U::Zero();
+        int count = 0;
+        for(std::size_t i = 0; i < n; ++i) {
+          if(!(w[i] > 0) || !(std::hypot(p[i][0], p[i][1]) > 0)) continue;
+          double dl = std::atan2(p[i][1], p[i][0]) - lon;
+          dl -= 2. * M_PI * std::floor((dl + M_PI) / (2. * M_PI));
+          if(std::abs(dl) >= M_PI / N) continue;
+          const U u = p[i].template head<2>();
+          As.noalias() += w[i] * u * u.transpose();
+          bs.noalias() += w[i] * p[i][2] * u;
+          ++count;
+        }
+        U gs = g;
+        if(count >= 3 && As.determinant() > 1e-12 * As.squaredNorm()) {
+          const U sol = As.ldlt().solve(bs);
+          if(sol.allFinite()) gs = sol;
+        }
+        r[2 * k] = std::atan(gs[0] * std::cos(lon) + gs[1] * std::sin(lon));
+        r[2 * k + 1] = lon;
       }
     }
     return r;
