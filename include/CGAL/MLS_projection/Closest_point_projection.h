@@ -138,7 +138,7 @@ public:
   explicit Closest_point_projection(std::shared_ptr<const Samples> samples,
                                     const Projection_options& options = Projection_options(),
                                     const FunctionSpace& space = FunctionSpace())
-    : Base(samples, options), space_(space), levin_(samples, options) {}
+    : Base(samples, options), space_(space), levin_(samples, with_bandwidth(options, this->bandwidth())) {}
 
   const FunctionSpace& function_space() const { return space_; }
 
@@ -165,7 +165,7 @@ public:
 
     std::vector<Frame<D>> starts;
     starts.push_back(Frame<D>::from_normal(qL, nL));
-    if constexpr(optimise_frame) add_starts(r, qL, nL, nbh, starts);
+    if constexpr(optimise_frame) add_starts(r, qL, nbh, starts);
 
     std::vector<Fit> fits;
     int iterations = 0;
@@ -250,7 +250,7 @@ protected:
   // Starts of the joint optimisation besides Levin's frame (paper, section 4.1): the frame
   // turned by pi/2 (in 3D, each other principal axis of the neighbourhood as the normal), and,
   // for spaces with sharp features, frames at the crease or apex proposed by a plane split.
-  void add_starts(const V& r, const V& qL, const V& nL, const Neighborhood<D>& nbh, std::vector<Frame<D>>& starts) const {
+  void add_starts(const V& r, const V& qL, const Neighborhood<D>& nbh, std::vector<Frame<D>>& starts) const {
     std::vector<double> w(nbh.size());
     for(std::size_t i = 0; i < nbh.size(); ++i) w[i] = this->weight_((nbh.points[i] - qL).squaredNorm());
     const Pca<D> pca = internal::weighted_pca<D>(nbh.points, w);
@@ -264,17 +264,17 @@ protected:
       if(!pca.valid) return;
       const auto two = internal::split_in_two<D>(nbh.points, w, pca);
       // only when two hyperplanes explain the points much better than one
-      if(two.valid && two.energy < 0.25 * pca.eigenvalues[0]) add_feature_start<2>(r, nL, two.planes, starts);
+      if(two.valid && two.energy < 0.25 * pca.eigenvalues[0]) add_feature_start<2>(r, two.planes, starts);
       if constexpr(D == 3) {
         const auto three = internal::split_in_three(nbh.points, w, pca);
         if(three.valid && three.energy < 0.25 * (std::min)(two.energy, pca.eigenvalues[0]))
-          add_feature_start<3>(r, nL, three.planes, starts);
+          add_feature_start<3>(r, three.planes, starts);
       }
     }
   }
 
   template <int K>
-  void add_feature_start(const V& r, const V& nL, std::array<Hyperplane<D>, K> planes, std::vector<Frame<D>>& starts) const {
+  void add_feature_start(const V& r, const std::array<Hyperplane<D>, K>& planes, std::vector<Frame<D>>& starts) const {
     V x;
     if(!internal::intersection_nearest<D, K>(planes, r, x)) return;
     // Orient each hyperplane so that the other pieces lie behind it: the normals are then all
@@ -287,7 +287,6 @@ protected:
         if(j != k) behind += planes[k].distance(planes[j].centroid);
       n += (behind > 0 ? -1. : 1.) * planes[k].normal;
     }
-    (void)nL;
     if(!(n.norm() > 1e-6)) return;
     Frame<D> frame = Frame<D>::from_normal(x, n.normalized());
     if constexpr(D == 3 && K == 2) {
@@ -409,10 +408,14 @@ protected:
     return res;
   }
 
+  static Projection_options with_bandwidth(Projection_options options, double h) {
+    if(h > 0) options.bandwidth = h; // derived once, by the base
+    return options;
+  }
+
   // Levin's answer, marked as not converged, when the joint optimisation fails.
   Result fallback(const Point& query, int iterations) const {
-    Levin_projection<GeomTraits, Plane_function_space<D>> levin(this->shared_samples(), this->options_);
-    Result res = levin.project(query);
+    Result res = levin_.project(query);
     res.iterations += iterations;
     if(res.is_success()) res.status = Projection_status::NOT_CONVERGED;
     return res;
