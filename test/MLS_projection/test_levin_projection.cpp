@@ -428,12 +428,13 @@ MLS_TEST(weights) {
   MLS_CHECK_NEAR(w(6.25), std::pow(0.5, 4) * 3., 1e-15);
 }
 
-// Prints the alignment of Levin's apex frame with the bisector for opening angles 20..170
-// degrees (run `test_levin_projection measure_wedge`).
-MLS_TEST(measure_wedge) {
-  static bool measure = std::getenv("MLS_MEASURE_WEDGE") != nullptr;
-  if(!measure) return;
-  for(int phi = 20; phi <= 170; phi += (phi >= 60 && phi < 75 ? 1 : 5)) std::cout << phi << " " << apex_frame_alignment(phi) << "\n";
+// `test_levin_projection --measure-wedge` prints the alignment of Levin's apex frame with the
+// bisector for opening angles 20..170 degrees (1-degree steps from 60 to 75): a measurement, not
+// a test.
+int main(int argc, char** argv) {
+  if(argc > 1 && std::string(argv[1]) == "--measure-wedge") {
+    for(int phi = 20; phi <= 170; phi += (phi >= 60 && phi < 75 ? 1 : 5)) std::cout << phi << " " << apex_frame_alignment(phi) << "\n";
+    return 0;
+  }
+  return mls_test::run_all(argc, argv);
 }
-
-int main(int argc, char** argv) { return mls_test::run_all(argc, argv); }

@@ -180,17 +180,6 @@ public:
     return sum / double(n);
   }
 
-  /// The half-diagonal of the bounding box of the local points.
-  double radius() const {
-    if(points_.empty()) return 0.;
-    Local_point lo = points_[0], hi = points_[0];
-    for(const auto& p : points_) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    return 0.5 * (hi - lo).norm();
-  }
-
 private:
   void build_tree() {
     std::vector<std::size_t> indices(points_.size());

@@ -45,8 +45,6 @@ template <class GeomTraits> struct Kernel_types<GeomTraits, 3> {
   static Vector to_vector(const Vec<3>& v) { return Vector(v[0], v[1], v[2]); }
 };
 
-template <int D> bool is_finite(const Vec<D>& v) { return v.allFinite(); }
-
 /// An orthonormal basis of the hyperplane orthogonal to the unit vector `n`
 /// (one vector in 2D, two in 3D), chosen deterministically from `n` alone.
 template <int D> std::array<Vec<D>, D - 1> tangent_basis(const Vec<D>& n);
