@@ -18,6 +18,7 @@
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #endif // CGAL_MLS_PROJECTION_H
