@@ -26,12 +26,15 @@
 namespace mls_tools {
 
 namespace internal {
-// The temporary file to remove on a signal (one at a time; async-signal-safe access only).
-inline char pending_temp_path[4096] = {0};
-inline volatile std::sig_atomic_t has_pending_temp = 0;
+// The temporary files to remove on a signal (a few at a time, e.g. an output and a side output;
+// async-signal-safe access only).
+constexpr int max_pending_temps = 4;
+inline char pending_temp_path[max_pending_temps][4096] = {};
+inline volatile std::sig_atomic_t has_pending_temp[max_pending_temps] = {};
 
 extern "C" inline void remove_pending_temp_and_exit(int sig) {
-  if(has_pending_temp) ::unlink(pending_temp_path);
+  for(int i = 0; i < max_pending_temps; ++i)
+    if(has_pending_temp[i]) ::unlink(pending_temp_path[i]);
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -57,9 +60,11 @@ public:
     ::umask(mask);
     ::fchmod(fd, 0666 & ~mask);
     ::close(fd);
-    if(temp_.size() < sizeof(internal::pending_temp_path)) {
-      std::strcpy(internal::pending_temp_path, temp_.c_str());
-      internal::has_pending_temp = 1;
+    for(int i = 0; i < internal::max_pending_temps && slot_ < 0; ++i)
+      if(!internal::has_pending_temp[i] && temp_.size() < sizeof(internal::pending_temp_path[i])) slot_ = i;
+    if(slot_ >= 0) {
+      std::strcpy(internal::pending_temp_path[slot_], temp_.c_str());
+      internal::has_pending_temp[slot_] = 1;
       for(int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, internal::remove_pending_temp_and_exit);
     }
     stream_.open(temp_, std::ios::out | std::ios::trunc);
@@ -91,21 +96,27 @@ public:
       discard();
       throw Input_error("cannot write '" + path_ + "': " + reason);
     }
-    internal::has_pending_temp = 0;
+    release_slot();
     temp_.clear();
   }
 
   /// Removes the temporary file (nothing after `commit()`).
   void discard() {
     if(temp_.empty()) return;
-    internal::has_pending_temp = 0;
+    release_slot();
     if(stream_.is_open()) stream_.close();
     std::remove(temp_.c_str());
     temp_.clear();
   }
 
 private:
+  void release_slot() {
+    if(slot_ >= 0) internal::has_pending_temp[slot_] = 0;
+    slot_ = -1;
+  }
+
   std::string path_, temp_;
+  int slot_ = -1; // in internal::pending_temp_path
   std::ofstream stream_;
 };
 
