@@ -2,21 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // mls_project: projects points onto the MLS curve (2D) or surface (3D) of a point set.
-// Run `mls_project --help` for the usage. The file reads top to bottom: the operator table,
-// the projection of one operator (a template over the dimension and the function space),
-// the command line, and main.
+// Run `mls_project --help` for the usage. The file reads top to bottom: the operator table, the
+// command line, and main. The projection itself (a template over the operator class) and the
+// classes behind each operator and function space are in <mls_tools/operator_rows.h>, compiled
+// in one translation unit per operator (mls_project_<operator>.cpp).
 
-#include <CGAL/MLS_projection.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
-
-#include <boost/iterator/function_output_iterator.hpp>
+#include <CGAL/MLS_projection/Projection_options.h>
+#include <CGAL/MLS_projection/Weight_function.h>
 
 #include <mls_tools/arguments.h>
 #include <mls_tools/errors.h>
 #include <mls_tools/output_file.h>
 #include <mls_tools/point_io.h>
 #include <mls_tools/progress.h>
+#include <mls_tools/projection_job.h>
 #include <mls_tools/synthetic.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -27,10 +26,8 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
-#include <functional>
-#include <iomanip>
+#include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -38,137 +35,78 @@
 
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
 using mls_tools::Input_error;
 using mls_tools::Point_cloud;
 using mls_tools::Usage_error;
 
 const char* const tool_name = "mls_project";
 const char* const default_output = "projected.xyz";
+const char* const default_operator = "unified";
+/// The function space when --space is not given (the operators that cannot use it, the graph
+/// operators levin and single when it is wedge or mixed, use `fallback_space`).
+const char* const default_space = "mixed";
+const char* const fallback_space = "quadratic";
 
 // ---------------------------------------------------------------------------------------------
-// What one projection run needs and gives back, whatever the operator.
+// The operators. Adding an operator is one entry in `operators()` and its rows (which class per
+// dimension and function space) in <mls_tools/operator_rows.h>, instantiated in its own
+// translation unit; the function spaces are listed in mls_tools::function_spaces().
 
-struct Job {
-  const Point_cloud& input;
-  const Point_cloud& queries;
-  const CGAL::MLS::Projection_options& options;
-  bool show_progress;
-  std::ostream& out;
-};
-
-struct Outcome {
-  std::size_t failed = 0;
-  double bandwidth = 0;
-};
-
-template <int D> struct Point_types;
-template <> struct Point_types<2> {
-  using Point = Kernel::Point_2;
-  using Vector = Kernel::Vector_2;
-  static Point point(const std::array<double, 3>& c) { return Point(c[0], c[1]); }
-  static Vector vector(const std::array<double, 3>& c) { return Vector(c[0], c[1]); }
-};
-template <> struct Point_types<3> {
-  using Point = Kernel::Point_3;
-  using Vector = Kernel::Vector_3;
-  static Point point(const std::array<double, 3>& c) { return Point(c[0], c[1], c[2]); }
-  static Vector vector(const std::array<double, 3>& c) { return Vector(c[0], c[1], c[2]); }
-};
-
-/// The fewest input points `Operator` accepts here: its own minimum, and at least D+1.
-template <class Operator>
-std::size_t minimum_points() {
-  return (std::max)(std::size_t(Operator::minimum_points()), std::size_t(Operator::dimension + 1));
-}
-
-/// Projects the queries with `Operator` (any operator of the package, constructible from a
-/// shared sample set and the options) and writes `x y [z] nx ny [nz]` per query, in order.
-template <class Operator>
-Outcome run_operator(const Job& job) {
-  constexpr int D = Operator::dimension;
-  using T = Point_types<D>;
-  using Sample = std::pair<typename T::Point, typename T::Vector>;
-  using Samples = typename Operator::Samples;
-  using Point_map = CGAL::First_of_pair_property_map<Sample>;
-  using Normal_map = CGAL::Second_of_pair_property_map<Sample>;
-
-  std::vector<Sample> samples;
-  samples.reserve(job.input.size());
-  for(std::size_t i = 0; i < job.input.size(); ++i)
-    samples.emplace_back(T::point(job.input.points[i]),
-                         job.input.has_normals ? T::vector(job.input.normals[i]) : typename T::Vector(CGAL::NULL_VECTOR));
-  // The normals only orient the results; the sample set's type does not depend on them.
-  const auto shared = job.input.has_normals
-    ? std::make_shared<const Samples>(samples, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))
-    : std::make_shared<const Samples>(samples, CGAL::parameters::point_map(Point_map()));
-  const Operator op(shared, job.options);
-
-  std::vector<typename T::Point> queries;
-  queries.reserve(job.queries.size());
-  for(const auto& q : job.queries.points) queries.push_back(T::point(q));
-
-  Outcome outcome;
-  outcome.bandwidth = op.bandwidth();
-  std::ostream& out = job.out;
-  out << std::setprecision(17);
-  // A std::function, because the output iterator must be assignable (a capturing lambda is not).
-  const std::function<void(const typename Operator::Result&)> write = [&](const typename Operator::Result& r) {
-    if(!r.is_success()) ++outcome.failed; // the result keeps the query and has a null normal
-    for(int k = 0; k < D; ++k) out << r.point[k] << ' ';
-    for(int k = 0; k < D; ++k) out << r.normal[k] << (k + 1 < D ? ' ' : '\n');
-  };
-  mls_tools::Progress_bar bar("mls_project: projecting", job.show_progress);
-  CGAL::MLS::project_points<CGAL::Parallel_if_available_tag>(op, queries, boost::make_function_output_iterator(write),
-                                                             CGAL::parameters::callback(bar.callback()));
-  bar.finish();
-  return outcome;
-}
-
-// ---------------------------------------------------------------------------------------------
-// The operators and function spaces. Adding an operator is one entry in `operators`.
-
-using Run_function = Outcome (*)(const Job&);
-using Minimum_function = std::size_t (*)();
-
-/// The function spaces, in the order of the second index of `Operator_entry::run`.
-const std::vector<std::pair<std::string, int>> spaces = {{"plane", 0}, {"quadratic", 1}};
+using mls_tools::Implementation;
 
 struct Operator_entry {
   const char* name;
   const char* description;
-  Run_function run[2][2];          // [dimension - 2][space]
-  Minimum_function minimum[2][2];  // [dimension - 2][space]
+  const char* restriction; // why the spaces without an implementation are not offered
+  mls_tools::Operator_rows rows; // [dimension - 2][column of the space]
 };
 
-/// The entry of an operator templated by its function space, like Levin_projection.
-template <template <class> class Operator>
-Operator_entry function_space_operator(const char* name, const char* description) {
-  using namespace CGAL::MLS;
-  return {name,
-          description,
-          {{&run_operator<Operator<Plane_function_space<2>>>, &run_operator<Operator<Polynomial_function_space<2>>>},
-           {&run_operator<Operator<Plane_function_space<3>>>, &run_operator<Operator<Polynomial_function_space<3>>>}},
-          {{&minimum_points<Operator<Plane_function_space<2>>>, &minimum_points<Operator<Polynomial_function_space<2>>>},
-           {&minimum_points<Operator<Plane_function_space<3>>>, &minimum_points<Operator<Polynomial_function_space<3>>>}}};
-}
-
-template <class Space> using Levin = CGAL::MLS::Levin_projection<Kernel, Space>;
-
 const std::vector<Operator_entry>& operators() {
+  const char* const graph_only = "it fits a height function over its frame, which needs a graph function space";
   static const std::vector<Operator_entry> table = {
-    function_space_operator<Levin>("levin", "Levin's two-phase projection P_L"),
+    {"levin", "Levin's two-phase projection P_L: frame, then a height function over it", graph_only,
+     mls_tools::levin_rows()},
+    {"single", "single-phase projection P_S (eq. 4): frame and height function fitted together", graph_only,
+     mls_tools::single_phase_rows()},
+    {"enriched", "enriched projection P_E (eq. 5): Levin's frame, then a closest-point fit", "",
+     mls_tools::enriched_rows()},
+    {"unified", "unified projection P_U (eq. 6): frame and function fitted together, closest-point distances", "",
+     mls_tools::unified_rows()},
   };
   return table;
+}
+
+const Operator_entry& find_operator(const std::string& name) {
+  for(const auto& e : operators())
+    if(name == e.name) return e;
+  throw std::logic_error(std::string("no operator named ") + name);
+}
+
+const std::vector<std::pair<std::string, int>>& spaces = mls_tools::function_spaces();
+
+int space_index(const std::string& name) {
+  for(const auto& s : spaces)
+    if(s.first == name) return s.second;
+  throw std::logic_error("no function space named " + name);
+}
+
+bool can_use(const Operator_entry& op, int space) { return op.rows[0][space].run && op.rows[1][space].run; }
+
+/// The names of the function spaces `op` can use, `a|b|...`.
+std::string usable_spaces(const Operator_entry& op) {
+  std::string names;
+  for(const auto& s : spaces)
+    if(can_use(op, s.second)) names += (names.empty() ? "" : "|") + s.first;
+  return names;
 }
 
 // ---------------------------------------------------------------------------------------------
 // The command line.
 
 struct Settings {
-  std::string input, output, queries;
-  const Operator_entry* op = &operators().front();
-  int space = 1; // quadratic
+  std::string input, output, queries, features;
+  const Operator_entry* op = &find_operator(default_operator);
+  std::optional<int> space; // unset: the default of the operator, see `choose_space`
   CGAL::MLS::Projection_options options;
   int threads = 0; // 0: all
   bool quiet = false;
@@ -199,11 +137,16 @@ mls_tools::Argument_parser make_parser(Settings& s) {
     op_names += (op_names.empty() ? "" : "|") + std::string(e.name);
     op_choices.emplace_back(e.name, &e);
   }
-  parser.add("--operator", op_names, "projection operator (default: levin)", [&s, op_choices](const std::string& v) {
-    s.op = mls_tools::parse_choice("--operator", v, op_choices);
-  });
-  parser.add("--space", "plane|quadratic", "function space of the local fit (default: quadratic)",
+  parser.add("--operator", op_names, std::string("projection operator (default: ") + default_operator + ")",
+             [&s, op_choices](const std::string& v) { s.op = mls_tools::parse_choice("--operator", v, op_choices); });
+  std::string space_names;
+  for(const auto& sp : spaces) space_names += (space_names.empty() ? "" : "|") + sp.first;
+  parser.add("--space", space_names,
+             std::string("function space of the local fit (default: ") + default_space + ", " + fallback_space +
+               " for the operators that cannot use it)",
              [&s](const std::string& v) { s.space = mls_tools::parse_choice("--space", v, spaces); });
+  parser.add("--features", "F", "also write the projections on a crease or apex to F: x y [z] dx dy [dz]",
+             [&s](const std::string& v) { s.features = v; });
   parser.add("--h", "H", "bandwidth h of the weight, > 0 (default: from the data, see --k)",
              [&s](const std::string& v) { s.options.bandwidth = mls_tools::parse_positive_double("--h", v); });
   parser.add("--k", "K", "neighbours of the initial PCA and of the default h (default: 6 in 2D, 16 in 3D)",
@@ -220,8 +163,9 @@ mls_tools::Argument_parser make_parser(Settings& s) {
 
 void print_help(const mls_tools::Argument_parser& parser) {
   std::cout
-    << "Usage: mls_project --input P --output O [--queries Q] [--operator levin] [--space plane|quadratic]\n"
-       "                   [--h H] [--k K] [--threads N] [--weight gaussian|wendland] [--quiet]\n"
+    << "Usage: mls_project --input P --output O [--queries Q] [--operator levin|single|enriched|unified]\n"
+       "                   [--space plane|quadratic|wedge|mixed] [--features F] [--h H] [--k K]\n"
+       "                   [--threads N] [--weight gaussian|wendland] [--quiet]\n"
        "\n"
        "Projects points onto the moving-least-squares (MLS) curve (2D input) or surface (3D input)\n"
        "defined by the input points.\n"
@@ -231,9 +175,35 @@ void print_help(const mls_tools::Argument_parser& parser) {
   std::cout
     << "\n"
        "Operators:\n";
-  for(const auto& e : operators()) std::cout << "  " << e.name << ": " << e.description << '\n';
+  for(const auto& e : operators())
+    std::cout << "  " << e.name << ": " << e.description << "; spaces " << usable_spaces(e) << '\n';
   std::cout
     << "\n"
+       "Function spaces (the local fit):\n"
+       "  plane: a hyperplane; biased on curved data by O(h^2) towards the inside.\n"
+       "  quadratic: with levin, the full degree-2 polynomial over the frame; with the other operators,\n"
+       "    the paper's quadratic with principal curvatures (k x^2 in 2D, a x^2 + b y^2 in 3D).\n"
+       "  wedge: a wedge fan (two rays in 2D, 4 infinite triangles around an apex in 3D): reproduces\n"
+       "    creases and corners exactly. Not a graph: enriched and unified only.\n"
+       "  mixed: both quadratic and wedge fits for every query; the wedge is kept when its energy is\n"
+       "    below 0.5 x the quadratic's, so that curved parts keep the quadratic's accuracy and\n"
+       "    creases the wedge's. Costs both fits. Enriched and unified only.\n";
+  std::string cannot; // the operators that cannot use the default space
+  for(const auto& e : operators())
+    if(!can_use(e, space_index(default_space))) cannot += (cannot.empty() ? "" : ", ") + std::string(e.name);
+  std::cout << "Without --space: " << default_space;
+  if(!cannot.empty()) std::cout << ", or " << fallback_space << " with the operators that cannot use it (" << cannot << ")";
+  std::cout
+    << ".\n"
+       "A --space that the operator cannot use is a command-line error.\n"
+       "\n"
+       "Features (--features F): one line per projected point that lies on a crease or an apex of its\n"
+       "local fit, in query order: x y [z] dx dy [dz], d the unit crease direction (its sign is\n"
+       "arbitrary); at an apex (a corner in 3D, every apex in 2D) d is written as zeros. Only the\n"
+       "wedge and mixed spaces find features (with enriched, whose frame is Levin's, they need not lie\n"
+       "on the data's creases; with unified they do): with the other spaces F is written empty.\n"
+       "F is written like the output (temporary file, renamed at the end).\n"
+       "\n"
        "Input: .xyz holds 2 (x y), 3 (x y z), 4 (x y nx ny) or 6 (x y z nx ny nz) numbers per line,\n"
        "blank lines and lines starting with # are skipped; .pwn holds 6 (x y z nx ny nz); .ply and .off\n"
        "give their vertices (3D, normals when present). The input decides the dimension; the queries\n"
@@ -246,7 +216,27 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "whose projection fails keeps its position with a null normal, and is counted as failed in the\n"
        "summary line printed on stderr. The output is written to a temporary file renamed at the end.\n"
        "\n"
+       "The summary line names the operator and the function space used.\n"
+       "\n"
        "Exit status: 0 on success, 1 on a bad input or output file, 2 on a bad command line.\n";
+}
+
+/// The function space of the run: --space when given (an error when the operator cannot use
+/// it), else the default, or the fall-back for the operators that cannot use the default.
+int choose_space(const Settings& s) {
+  if(!s.space) return can_use(*s.op, space_index(default_space)) ? space_index(default_space) : space_index(fallback_space);
+  if(!can_use(*s.op, *s.space))
+    throw Usage_error("--operator " + std::string(s.op->name) + " cannot use --space " + spaces[*s.space].first + ": " +
+                      s.op->restriction + " (" + usable_spaces(*s.op) + ")");
+  return *s.space;
+}
+
+/// Whether two paths name the same file (existing or not).
+bool same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ec1, ec2;
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a), ec1), cb = fs::weakly_canonical(fs::absolute(b), ec2);
+  return ec1 || ec2 ? a == b : ca == cb;
 }
 
 /// Reads a point file, or the built-in torus when `path` is empty.
@@ -264,16 +254,22 @@ int run(int argc, char** argv) {
   }
   if(s.input.empty() && s.output.empty()) s.output = default_output;
   if(s.output.empty()) throw Usage_error("missing --output (see --help)");
+  const int space = choose_space(s);
+  if(!s.features.empty() && same_file(s.features, s.output))
+    throw Usage_error("--features and --output name the same file '" + s.features + "'");
 
-  // Check that the output can be written before doing any work.
+  // Check that the outputs can be written before doing any work.
   mls_tools::Atomic_output_file output(s.output);
+  std::optional<mls_tools::Atomic_output_file> features;
+  if(!s.features.empty()) features.emplace(s.features);
 
   const Point_cloud input = read_input(s.input);
   const std::string input_name = s.input.empty() ? "the built-in torus" : "'" + s.input + "'";
   const int D = input.dimension;
   if(D == 2 && mls_tools::lower_extension(s.output) == ".pwn")
     throw Usage_error("a .pwn output holds 3D points, but the input is 2D: use .xyz");
-  mls_tools::check_point_cloud(input, s.op->minimum[D - 2][s.space](), input_name);
+  const Implementation& implementation = s.op->rows[D - 2][space];
+  mls_tools::check_point_cloud(input, implementation.minimum_points(), input_name);
 
   Point_cloud queries_file;
   if(!s.queries.empty()) {
@@ -289,13 +285,22 @@ int run(int argc, char** argv) {
   if(s.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
 #endif
 
-  const Job job{input, queries, s.options, !s.quiet && mls_tools::stderr_is_terminal(), output.stream()};
-  const Outcome outcome = s.op->run[D - 2][s.space](job);
+  const mls_tools::Projection_job job{input.points,
+                                     input.has_normals ? &input.normals : nullptr,
+                                     queries.points,
+                                     s.options,
+                                     !s.quiet && mls_tools::stderr_is_terminal(),
+                                     output.stream(),
+                                     features ? &features->stream() : nullptr};
+  const mls_tools::Projection_outcome outcome = implementation.run(job);
+  if(features) features->commit();
   output.commit();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "%s: %zu points (%dD), %zu queries, %zu failed, h=%.3g, %.2f s, output %s\n", tool_name,
-               input.size(), D, queries.size(), outcome.failed, outcome.bandwidth, seconds, s.output.c_str());
+  std::fprintf(stderr, "%s: %zu points (%dD), %zu queries, %zu failed, %zu on features, %s/%s, h=%.3g, %.2f s, output %s%s%s\n",
+               tool_name, input.size(), D, queries.size(), outcome.failed, outcome.on_feature, s.op->name,
+               spaces[space].first.c_str(), outcome.bandwidth, seconds, s.output.c_str(), features ? ", features " : "",
+               features ? s.features.c_str() : "");
   return 0;
 }
 
