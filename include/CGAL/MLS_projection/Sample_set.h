@@ -182,6 +182,9 @@ public:
 
 private:
   void build_tree() {
+    // CGAL's Kd_tree::build() asserts a non-empty point set (no finite input point: no tree;
+    // every query function returns early on an empty set)
+    if(points_.empty()) return;
     std::vector<std::size_t> indices(points_.size());
     for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
     tree_ = std::make_unique<Tree>(indices.begin(), indices.end(), typename Tree::Splitter(),
