@@ -77,4 +77,31 @@ CGAL::MLS::Closest_point<D> closest_point(const Parameters& c, const Eigen::Matr
 
 /// @}
 
+/// \name Optional operations
+/// The operators detect these at compile time.
+/// @{
+
+/// Optional. The closest points `out[0..n-1]` of the `n` points `x[0..n-1]` on the member `c`
+/// and, when `gradients` is not null, the derivatives `gradients[i]` of their signed distances
+/// with respect to the parameters (by the envelope theorem, \f$-g \cdot \partial S/\partial c\f$ at
+/// the closest point \f$S\f$, \f$g = (x - S)/d\f$). With it, the operators use an analytic Jacobian
+/// and prepare the member once per evaluation; without it, forward differences.
+void closest_points(const Parameters& c, const Eigen::Matrix<double, D, 1>* x, std::size_t n,
+                    CGAL::MLS::Closest_point<D>* out, Parameters* gradients) const;
+
+/// Optional. A dimensionless residual added to the energy, zero for the members the space
+/// considers plausible at bandwidth `h` (the quadratic spaces bound the curvature).
+double regularization(const Parameters& c, double h) const;
+
+/// Optional (required by `Single_phase_projection`). The point of a graph above or below `x`.
+CGAL::MLS::Closest_point<D> vertical_projection(const Parameters& c, const Eigen::Matrix<double, D, 1>& x) const;
+
+/// Optional. `static constexpr bool has_sharp_features = true` asks the operators for starts at
+/// creases and apices proposed by splitting the neighbourhood; `static constexpr bool
+/// is_rotation_invariant = true` (the space is closed under rotations of the frame) lets them
+/// optimise the frame origin only.
+static constexpr bool has_sharp_features;
+
+/// @}
+
 }; /* end MLSFunctionSpace */

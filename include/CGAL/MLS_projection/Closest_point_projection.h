@@ -65,6 +65,16 @@ template <class S>
 struct has_regularization<S, std::void_t<decltype(std::declval<const S&>().regularization(
                                std::declval<const typename S::Parameters&>(), 1.))>> : std::true_type {};
 
+// Function spaces may provide the batch `closest_points(c, x, n, out, gradients)`, which also
+// gives the derivatives of the signed distances with respect to the parameters: the operators
+// then use an analytic Jacobian (else forward differences of the residuals).
+template <class S, class = void> struct has_closest_points : std::false_type {};
+template <class S>
+struct has_closest_points<S, std::void_t<decltype(std::declval<const S&>().closest_points(
+                               std::declval<const typename S::Parameters&>(), std::declval<const Vec<S::ambient_dimension>*>(),
+                               std::size_t(0), std::declval<Closest_point<S::ambient_dimension>*>(),
+                               std::declval<typename S::Parameters*>()))>> : std::true_type {};
+
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionOperators
@@ -82,6 +92,9 @@ struct has_regularization<S, std::void_t<decltype(std::declval<const S&>().regul
 /// (or three) hyperplanes meet. A fit whose \f$C_{H,f}(r)\f$ is further from \f$r\f$ than Levin's
 /// frame origin plus \f$2h\f$ is penalised and rejected; when no start gives a valid fit, the
 /// result is Levin's projection with the status `NOT_CONVERGED`.
+///
+/// The optimisation works in units of \f$h\f$: the result's `coefficients` are those of the
+/// member with every length divided by \f$h\f$.
 ///
 /// The result's `is_on_feature` and `feature_direction` tell whether \f$C_{H,f}(r)\f$ lies on a
 /// crease or apex of \f$f\f$.
@@ -138,7 +151,8 @@ public:
   explicit Closest_point_projection(std::shared_ptr<const Samples> samples,
                                     const Projection_options& options = Projection_options(),
                                     const FunctionSpace& space = FunctionSpace())
-    : Base(samples, options), space_(space), levin_(samples, with_bandwidth(options, this->bandwidth())) {}
+    : Base(samples, options), space_(space), levin_(samples, with_bandwidth(options, this->bandwidth())),
+      unit_weight_(options.weight, 1., options.weight == Weight_kind::GAUSSIAN ? options.gaussian_cutoff : options.wendland_support) {}
 
   const FunctionSpace& function_space() const { return space_; }
 
@@ -156,35 +170,52 @@ public:
     Neighborhood<D> nbh;
     const auto levin = levin_.find_frame(r, nbh);
     if(levin.status != Projection_status::CONVERGED) return this->failure(query, levin.status);
-    const V qL = levin.origin, nL = levin.normal;
     const double h = this->h_;
-    // P_U(r) may not move further from r than Levin's frame origin plus this margin.
-    const double bound = (qL - r).norm() + 2 * h;
-    nbh.gather(this->samples(), qL, this->weight_.support_radius() + 2 * h);
+    const double support = unit_weight_.support_radius(); // in units of h
+    nbh.gather(this->samples(), levin.origin, h * (support + 2));
     if(nbh.size() < minimum_points()) return this->failure(query, Projection_status::TOO_FEW_NEIGHBORS);
+
+    // From here on, lengths are in units of h (the optimiser's parameters are then all of
+    // order 1, whatever the scale of the input).
+    Neighborhood<D> unit = in_units_of_h(nbh);
+    const V rs = r / h, qL = levin.origin / h, nL = levin.normal;
+    // P_U(r) may not move further from r than Levin's frame origin plus this margin.
+    const double bound = (qL - rs).norm() + 2;
 
     std::vector<Frame<D>> starts;
     starts.push_back(Frame<D>::from_normal(qL, nL));
-    if constexpr(optimise_frame) add_starts(r, qL, nbh, starts);
+    if constexpr(optimise_frame) add_starts(rs, qL, unit, starts);
 
+    // A race: every start gets a short budget, then only the selected fit runs to convergence
+    // (most starts lead to minima of much higher energy, which are told apart early). An exact
+    // fit (zero energy) supported by the data ends the race: no other start can beat it.
     std::vector<Fit> fits;
     int iterations = 0;
+    const int short_budget = starts.size() > 1 ? race_evaluations : 0;
     for(const Frame<D>& start : starts) {
-      Fit fit = minimize(r, start, initial_member(start, nbh), nbh, bound);
+      Fit fit = minimize(rs, start, initial_member(start, unit), unit, bound, short_budget);
       iterations += fit.iterations;
+      fit.supported = fit.valid && is_supported(fit, unit);
       fits.push_back(fit);
+      if(fit.supported && fit.converged && fit.value <= exact_value) break;
     }
-    Fit best = select(fits, nbh);
+    Fit best = select(fits);
+    if(best.valid && !best.converged) {
+      Fit fit = minimize(rs, best.frame, best.c, unit, bound);
+      iterations += fit.iterations;
+      if(fit.valid) best = fit;
+    }
     // The weights are centred on C(r): make sure the gathered ball covers their support there.
-    for(int round = 0; round < 3 && best.valid && !nbh.covers(best.C, this->weight_.support_radius()); ++round) {
-      nbh.gather(this->samples(), best.C, this->weight_.support_radius() + 2 * h);
+    for(int round = 0; round < 3 && best.valid && !unit.covers(best.C, support); ++round) {
+      nbh.gather(this->samples(), h * best.C, h * (support + 2));
       if(nbh.size() < minimum_points()) break;
-      Fit fit = minimize(r, best.frame, best.c, nbh, bound);
+      unit = in_units_of_h(nbh);
+      Fit fit = minimize(rs, best.frame, best.c, unit, bound);
       iterations += fit.iterations;
       best = fit;
     }
     if(!best.valid) return fallback(query, iterations);
-    return make_result(r, best, nbh, iterations);
+    return make_result(rs, best, unit, nbh, iterations);
   }
 
   Result operator()(const Point& query) const { return project(query); }
@@ -210,25 +241,25 @@ protected:
   // another face, unsupported, near r has zero residuals too (and a C(r) nearer to r); the
   // support test rejects those far from the data, the order of the starts those near it.
   // When no fit is supported (a query beyond the end of the data), all fits compete.
-  Fit select(std::vector<Fit>& fits, const Neighborhood<D>& nbh) const {
-    bool any_supported = false;
-    for(Fit& f : fits) {
-      if(!f.valid) continue;
-      double nearest = std::numeric_limits<double>::infinity();
-      for(std::size_t i = 0; i < nbh.size(); ++i) {
-        if(this->weight_((nbh.points[i] - f.C).squaredNorm()) <= 0) continue;
-        const V c = f.frame.to_local(space_.closest_point(f.c, f.frame.to_frame(nbh.points[i])).point);
-        nearest = (std::min)(nearest, (c - f.C).squaredNorm());
-      }
-      f.supported = nearest <= 0.25 * this->h_ * this->h_;
-      any_supported |= f.supported;
+  // Whether C(r) lies within h/2 of the closest point of some weighted input point.
+  bool is_supported(const Fit& f, const Neighborhood<D>& nbh) const {
+    for(std::size_t i = 0; i < nbh.size(); ++i) {
+      if(unit_weight_((nbh.points[i] - f.C).squaredNorm()) <= 0) continue;
+      const V c = f.frame.to_local(space_.closest_point(f.c, f.frame.to_frame(nbh.points[i])).point);
+      if((c - f.C).squaredNorm() <= 0.25) return true;
     }
+    return false;
+  }
+
+  Fit select(const std::vector<Fit>& fits) const {
+    bool any_supported = false;
+    for(const Fit& f : fits) any_supported |= f.supported;
     double lowest = std::numeric_limits<double>::infinity();
     for(const Fit& f : fits)
       if(f.valid && (f.supported || !any_supported)) lowest = (std::min)(lowest, f.energy);
     for(const Fit& f : fits) {
       if(!f.valid || (any_supported && !f.supported)) continue;
-      if(f.energy <= 1.05 * lowest + 1e-10 * this->h_ * this->h_) return f;
+      if(f.energy <= 1.05 * lowest + 1e-10) return f;
     }
     return Fit();
   }
@@ -239,7 +270,7 @@ protected:
     y.reserve(nbh.size());
     w.reserve(nbh.size());
     for(const V& p : nbh.points) {
-      const double wi = this->weight_((p - frame.origin).squaredNorm());
+      const double wi = unit_weight_((p - frame.origin).squaredNorm());
       if(wi <= 0) continue;
       y.push_back(frame.to_frame(p));
       w.push_back(wi);
@@ -252,7 +283,7 @@ protected:
   // for spaces with sharp features, frames at the crease or apex proposed by a plane split.
   void add_starts(const V& r, const V& qL, const Neighborhood<D>& nbh, std::vector<Frame<D>>& starts) const {
     std::vector<double> w(nbh.size());
-    for(std::size_t i = 0; i < nbh.size(); ++i) w[i] = this->weight_((nbh.points[i] - qL).squaredNorm());
+    for(std::size_t i = 0; i < nbh.size(); ++i) w[i] = unit_weight_((nbh.points[i] - qL).squaredNorm());
     const Pca<D> pca = internal::weighted_pca<D>(nbh.points, w);
     if(!pca.valid) return;
     for(int axis = 1; axis < D; ++axis) starts.push_back(Frame<D>::from_normal(qL, pca.eigenvectors.col(axis)));
@@ -298,56 +329,178 @@ protected:
     starts.push_back(frame);
   }
 
-  // Packs frame offsets (units of h), tilt angles and function parameters.
-  Fit minimize(const V& r, const Frame<D>& start, const Parameters& c0, const Neighborhood<D>& nbh, double bound) const {
-    const double h = this->h_;
-    const int n = T + R + P;
+  // The neighbourhood with every length divided by h.
+  Neighborhood<D> in_units_of_h(const Neighborhood<D>& nbh) const {
+    Neighborhood<D> unit = nbh;
+    const double inv_h = 1. / this->h_;
+    for(V& p : unit.points) p *= inv_h;
+    unit.centre *= inv_h;
+    unit.radius *= inv_h;
+    return unit;
+  }
+
+  // Minimises equation 6 (4, 5) from `start` and `c0`, in units of h. The parameters are the
+  // tilt angles (R), the frame offsets (T) and the function's parameters (P).
+  // `max_evaluations` (0: the options' budget) limits the function evaluations.
+  Fit minimize(const V& r, const Frame<D>& start, const Parameters& c0, const Neighborhood<D>& nbh, double bound,
+               int max_evaluations = 0) const {
+    constexpr int F = T + R; // parameters of the frame
+    const int n = F + P;
     const int m = int(nbh.size()) + 2;
-    std::vector<double> w(nbh.size());
     // the start's plane, its origin moved to the foot of r
-    const double s0 = (start.origin - r).dot(start.normal()) / h;
+    const double s0 = (start.origin - r).dot(start.normal());
     const auto unpack = [&](const Eigen::VectorXd& x, Frame<D>& f, Parameters& c) {
       if constexpr(optimise_frame && R > 0 && T == D) {
-        f = start.moved(h * V(x.template segment<D>(R)), x.template segment<R>(0));
+        f = start.moved(V(x.template segment<D>(R)), x.template segment<R>(0));
       } else if constexpr(optimise_frame && R > 0) {
         f = start.moved(V::Zero(), x.template segment<R>(0));
-        f.origin = r + ((s0 + x[R]) * h) * f.normal();
+        f.origin = r + (s0 + x[R]) * f.normal();
       } else if constexpr(optimise_frame) {
         f = start;
-        f.origin += h * V(x.template head<D>());
+        f.origin += V(x.template head<D>());
       } else {
         f = start;
       }
-      for(int j = 0; j < P; ++j) c[j] = x[T + R + j];
+      for(int j = 0; j < P; ++j) c[j] = x[F + j];
     };
-    const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& res) {
+    const auto closest_of_r = [&](const Eigen::VectorXd& x) {
+      Frame<D> f;
+      Parameters c;
+      unpack(x, f, c);
+      return V(f.to_local(space_.closest_point(c, f.to_frame(r)).point));
+    };
+
+    // Residuals sqrt(w_i / W) d_i (zero outside the support), then the displacement penalty
+    // and the space's regularisation; with `J`, their derivatives.
+    std::vector<double> w(nbh.size());
+    std::vector<int> active;
+    std::vector<V> y;
+    std::vector<Closest_point<D>> cps;
+    std::vector<Parameters> grads;
+    const auto evaluate = [&](const Eigen::VectorXd& x, Eigen::VectorXd& res, Eigen::MatrixXd* J) {
       Frame<D> f;
       Parameters c;
       unpack(x, f, c);
       const V C = f.to_local(space_.closest_point(c, f.to_frame(r)).point);
+      res.setZero();
+      if(J) J->setZero();
       double W = 0;
+      active.clear();
+      y.clear();
       for(std::size_t i = 0; i < nbh.size(); ++i) {
-        w[i] = this->weight_((nbh.points[i] - C).squaredNorm());
+        w[i] = unit_weight_((nbh.points[i] - C).squaredNorm());
+        if(!(w[i] > 0)) continue;
         W += w[i];
+        active.push_back(int(i));
+        y.push_back(f.to_frame(nbh.points[i]));
       }
       if(!(W > 0) || !C.allFinite()) {
         res.setConstant(1e3); // a plateau the trust region backs off from
         return;
       }
-      for(std::size_t i = 0; i < nbh.size(); ++i)
-        res[i] = w[i] > 0 ? std::sqrt(w[i] / W) * space_.closest_point(c, f.to_frame(nbh.points[i])).signed_distance / h : 0.;
+      cps.resize(y.size());
+      if constexpr(internal::has_closest_points<FunctionSpace>::value) {
+        if(J) grads.resize(y.size());
+        space_.closest_points(c, y.data(), y.size(), cps.data(), J ? grads.data() : nullptr);
+      } else {
+        for(std::size_t k = 0; k < y.size(); ++k) cps[k] = space_.closest_point(c, y[k]);
+      }
+      for(std::size_t k = 0; k < y.size(); ++k) res[active[k]] = std::sqrt(w[active[k]] / W) * cps[k].signed_distance;
       const double excess = (C - r).norm() - bound;
-      res[m - 2] = excess > 0 ? 10. * excess / h : 0.;
-      if constexpr(internal::has_regularization<FunctionSpace>::value) res[m - 1] = space_.regularization(c, h);
-      else res[m - 1] = 0.;
-      if(!res.allFinite()) res.setConstant(1e3);
+      res[m - 2] = excess > 0 ? 10. * excess : 0.;
+      if constexpr(internal::has_regularization<FunctionSpace>::value) res[m - 1] = space_.regularization(c, 1.);
+      if(!res.allFinite()) {
+        res.setConstant(1e3);
+        return;
+      }
+      if(!J) return;
+
+      // C(r) and the frame, by central differences (no input point involved: cheap). C(r)
+      // jumps where the closest piece of a fan changes: when the one-sided differences
+      // disagree, the smaller one is kept (the derivative on the side of the query's piece).
+      Eigen::Matrix<double, D, Eigen::Dynamic> dC(D, n);
+      std::array<internal::Mat<D>, F + 1> dA;
+      std::array<V, F + 1> dq;
+      Eigen::VectorXd xp = x, xm = x;
+      for(int j = 0; j < n; ++j) {
+        const double eps = 1e-7 * (1. + std::abs(x[j]));
+        xp[j] = x[j] + eps;
+        xm[j] = x[j] - eps;
+        const V forward = (closest_of_r(xp) - C) / eps, backward = (C - closest_of_r(xm)) / eps;
+        if((forward - backward).norm() <= 1e-2 * (forward.norm() + backward.norm()) + 1e-6)
+          dC.col(j) = 0.5 * (forward + backward);
+        else
+          dC.col(j) = forward.norm() < backward.norm() ? forward : backward;
+        if(j < F) {
+          Frame<D> fp, fm;
+          Parameters cp, cm;
+          unpack(xp, fp, cp);
+          unpack(xm, fm, cm);
+          dA[j] = (fp.axes - fm.axes) / (2. * eps);
+          dq[j] = (fp.origin - fm.origin) / (2. * eps);
+        }
+        xp[j] = xm[j] = x[j];
+      }
+      // d w_i = w'(|p_i - C|^2) (-2 (p_i - C) . dC), and dW their sum
+      Eigen::MatrixXd dw(y.size(), n);
+      Eigen::RowVectorXd dW = Eigen::RowVectorXd::Zero(n);
+      for(std::size_t k = 0; k < y.size(); ++k) {
+        const V e = nbh.points[active[k]] - C;
+        dw.row(k) = (-2. * unit_weight_.derivative(e.squaredNorm())) * (e.transpose() * dC);
+        dW += dw.row(k);
+      }
+      for(std::size_t k = 0; k < y.size(); ++k) {
+        const int i = active[k];
+        const Closest_point<D>& cp = cps[k];
+        // the gradient of the signed distance with respect to the point, in frame coordinates
+        V g = cp.normal;
+        if(std::abs(cp.signed_distance) > 0) g = (y[k] - cp.point) / cp.signed_distance;
+        const double a = std::sqrt(w[i] / W);
+        for(int j = 0; j < n; ++j) {
+          double dd;
+          if(j < F) dd = g.dot(dA[j].transpose() * (nbh.points[i] - f.origin) - f.axes.transpose() * dq[j]);
+          else dd = grads[k][j - F];
+          const double dratio = dw(k, j) / W - w[i] * dW[j] / (W * W); // d (w_i / W)
+          (*J)(i, j) = cp.signed_distance * dratio / (2. * a) + a * dd;
+        }
+      }
+      if(excess > 0) J->row(m - 2) = 10. * ((C - r).normalized().transpose() * dC);
+      if constexpr(internal::has_regularization<FunctionSpace>::value) {
+        for(int j = 0; j < P; ++j) {
+          const double eps = 1e-6 * (1. + std::abs(c[j]));
+          Parameters cp = c, cm = c;
+          cp[j] += eps;
+          cm[j] -= eps;
+          (*J)(m - 1, F + j) = (space_.regularization(cp, 1.) - space_.regularization(cm, 1.)) / (2. * eps);
+        }
+      }
+      if(!J->allFinite()) J->setZero();
     };
+    const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& res) { evaluate(x, res, nullptr); };
+    const auto jacobian = [&](const Eigen::VectorXd& x, Eigen::MatrixXd& J) {
+      Eigen::VectorXd res(m);
+      evaluate(x, res, &J);
+    };
+
     Eigen::VectorXd x0 = Eigen::VectorXd::Zero(n);
-    for(int j = 0; j < P; ++j) x0[T + R + j] = c0[j];
+    for(int j = 0; j < P; ++j) x0[F + j] = c0[j];
     Minimizer_settings settings;
     settings.tolerance = this->options_.tolerance;
-    settings.max_evaluations = this->options_.max_evaluations * (n + 1) / (D + 1);
-    const auto report = internal::minimize_sum_of_squares(residuals, m, x0, settings);
+    // An exact fit stops at once. On noisy data, the energy has long, nearly flat valleys
+    // (moving the origin tangentially while tilting the frame and bending the function changes
+    // the surface near C(r) very little), along which the steps would crawl for hundreds of
+    // iterations, gaining a few 1e-5 of the energy: stop when 10 evaluations gain less than 1e-6.
+    settings.absolute_value = exact_value;
+    settings.stall_tolerance = 1e-6;
+    settings.max_evaluations =
+      max_evaluations > 0 ? max_evaluations : this->options_.max_evaluations * (n + 1) / (D + 1);
+    internal::Minimizer_report report;
+    if constexpr(internal::has_closest_points<FunctionSpace>::value) {
+      report = internal::minimize_sum_of_squares(residuals, jacobian, m, x0, settings);
+    } else {
+      settings.stall_evaluations *= n + 1; // the forward differences are evaluations too
+      report = internal::minimize_sum_of_squares(residuals, m, x0, settings);
+    }
 
     Fit fit;
     unpack(report.x, fit.frame, fit.c);
@@ -358,7 +511,7 @@ protected:
     // the energy of equation 6 without the displacement penalty
     double W = 0, E = 0;
     for(std::size_t i = 0; i < nbh.size(); ++i) {
-      const double wi = this->weight_((nbh.points[i] - fit.C).squaredNorm());
+      const double wi = unit_weight_((nbh.points[i] - fit.C).squaredNorm());
       if(wi <= 0) continue;
       const double d = space_.closest_point(fit.c, fit.frame.to_frame(nbh.points[i])).signed_distance;
       W += wi;
@@ -370,7 +523,10 @@ protected:
     return fit;
   }
 
-  Result make_result(const V& r, const Fit& fit, const Neighborhood<D>& nbh, int iterations) const {
+  // `r`, `fit` and `unit` in units of h; `nbh` is `unit` in local coordinates.
+  Result make_result(const V& r, const Fit& fit, const Neighborhood<D>& unit, const Neighborhood<D>& nbh,
+                     int iterations) const {
+    const double h = this->h_;
     const auto cp = space_.closest_point(fit.c, fit.frame.to_frame(r));
     V point = fit.C;
     V normal = fit.frame.vector_to_local(cp.normal);
@@ -381,25 +537,26 @@ protected:
       point = fit.frame.to_local(vertical.point);
       normal = fit.frame.vector_to_local(vertical.normal);
     }
+    point *= h;
     normal.normalize();
     normal *= this->orientation(point, normal, nbh);
-    if(!point.allFinite() || !normal.allFinite()) return fallback(this->samples().to_world(r), iterations);
+    if(!point.allFinite() || !normal.allFinite()) return fallback(this->samples().to_world(r * h), iterations);
     Result res;
     std::array<V, D - 1> tangents;
     for(int j = 0; j < D - 1; ++j) tangents[j] = fit.frame.axes.col(j);
-    this->set_geometry(res, point, normal, fit.frame.origin, fit.frame.normal(), tangents);
+    this->set_geometry(res, point, normal, V(h * fit.frame.origin), fit.frame.normal(), tangents);
     res.coefficients.assign(fit.c.data(), fit.c.data() + P);
-    res.energy = fit.energy;
+    res.energy = fit.energy * h * h;
     res.iterations = iterations;
     res.number_of_neighbors = nbh.size();
     if constexpr(kind != Operator_kind::SINGLE_PHASE) {
       // A singular C(r) is a feature of the data only if no single hyperplane explains the
       // weighted points as well as the fit: a fan can also have an apex or a crease on a flat
       // region (coplanar faces but one, which no point supports).
-      std::vector<double> w(nbh.size());
-      for(std::size_t i = 0; i < nbh.size(); ++i) w[i] = this->weight_((nbh.points[i] - fit.C).squaredNorm());
-      const auto pca = internal::weighted_pca<D>(nbh.points, w);
-      const bool is_feature = pca.valid && pca.eigenvalues[0] > 4. * fit.energy + 1e-14 * this->h_ * this->h_;
+      std::vector<double> w(unit.size());
+      for(std::size_t i = 0; i < unit.size(); ++i) w[i] = unit_weight_((unit.points[i] - fit.C).squaredNorm());
+      const auto pca = internal::weighted_pca<D>(unit.points, w);
+      const bool is_feature = pca.valid && pca.eigenvalues[0] > 4. * fit.energy + 1e-14;
       res.is_on_feature = cp.is_singular && is_feature;
       if(res.is_on_feature)
         res.feature_direction = internal::Kernel_types<GeomTraits, D>::to_vector(fit.frame.vector_to_local(cp.direction));
@@ -407,6 +564,11 @@ protected:
     res.status = fit.converged ? Projection_status::CONVERGED : Projection_status::NOT_CONVERGED;
     return res;
   }
+
+  // The budget of function evaluations of each start before the selection.
+  static constexpr int race_evaluations = 30;
+  // A sum of squares (units of h^2) below which a fit is exact: every residual below 1e-13 h.
+  static constexpr double exact_value = 1e-26;
 
   static Projection_options with_bandwidth(Projection_options options, double h) {
     if(h > 0) options.bandwidth = h; // derived once, by the base
@@ -423,6 +585,7 @@ protected:
 
   FunctionSpace space_;
   Levin levin_;
+  Weight_function unit_weight_; // the weight of bandwidth 1: the optimisation works in units of h
 };
 
 /// \ingroup PkgMLSProjectionOperators

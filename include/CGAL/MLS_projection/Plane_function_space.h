@@ -54,6 +54,12 @@ public:
     return cp;
   }
 
+  /// The closest points of the `n` points `x` (no parameters, hence no gradients).
+  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+                      Parameters*) const {
+    for(std::size_t i = 0; i < n; ++i) out[i] = closest_point(c, x[i]);
+  }
+
   /// The point of the graph above or below `x` (for `Single_phase_projection`): here the same
   /// as `closest_point()`.
   Closest_point<D> vertical_projection(const Parameters& c, const internal::Vec<D>& x) const {

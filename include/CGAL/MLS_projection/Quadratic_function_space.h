@@ -9,11 +9,9 @@
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
 #include <Eigen/Dense>
-#include <unsupported/Eigen/Polynomials>
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <cstddef>
 
 namespace CGAL {
@@ -95,8 +93,9 @@ inline int parabola_stationary_points(double k, double a, double b, double x[3])
 ///   curvatures (halved) and the angle of the first principal direction
 ///   \f$(\cos\theta, \sin\theta)\f$. The angle is the extra rotation parameter of the paper,
 ///   which makes the space closed under rotations of the frame about its normal. The closest
-///   point solves a quintic equation, whose roots are the eigenvalues of its companion matrix
-///   (`Eigen::PolynomialSolver`); the best candidate is polished by Newton's method.
+///   point is the unique root, in the interval where the Hessian of the Lagrangian is positive
+///   semi-definite, of a monotone secular equation (equivalent to the paper's quintic, of which
+///   it selects the right root), found by safeguarded Newton steps and polished in \f$(x, y)\f$.
 ///
 /// Terms of degree at most 1 are left out: the unified operator moves the frame, which
 /// generates them.
@@ -158,12 +157,13 @@ public:
   double maximum_curvature = 8.;
 
   /// A dimensionless penalty, zero for members whose curvature is at most
-  /// `maximum_curvature / h`, growing linearly beyond (added to the energy by the operators).
+  /// `maximum_curvature / h`, growing linearly beyond (added to the energy by the operators):
+  /// the norm of the excesses of the principal curvatures (a smooth function of both).
   double regularization(const Parameters& c, double h) const {
-    double k = 2. * std::abs(c[0]);
-    if constexpr(D == 3) k = (std::max)(k, 2. * std::abs(c[1]));
-    const double excess = k * h - maximum_curvature;
-    return excess > 0 ? excess : 0.;
+    const double ea = (std::max)(0., 2. * std::abs(c[0]) * h - maximum_curvature);
+    if constexpr(D == 2) return ea;
+    const double eb = (std::max)(0., 2. * std::abs(c[1]) * h - maximum_curvature);
+    return std::sqrt(ea * ea + eb * eb);
   }
 
   /// The point \f$(u, f(u))\f$ of the graph above or below `x = (u, z)`, with its normal
@@ -192,6 +192,31 @@ public:
     else return closest_point_3(c[0], c[1], c[2], x);
   }
 
+  /// The closest points of the `n` points `x` on the member `c` and, when `gradients` is not
+  /// null, the derivatives of their signed distances with respect to \f$c\f$: by the envelope
+  /// theorem, \f$-g \cdot \partial S/\partial c\f$ at the closest point \f$S\f$, with
+  /// \f$g = (x - S)/d\f$ (the normal when \f$d = 0\f$).
+  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+                      Parameters* gradients) const {
+    for(std::size_t i = 0; i < n; ++i) {
+      out[i] = closest_point(c, x[i]);
+      if(!gradients) continue;
+      const Closest_point<D>& cp = out[i];
+      internal::Vec<D> g = cp.normal;
+      if(std::abs(cp.signed_distance) > 0.) g = (x[i] - cp.point) / cp.signed_distance;
+      const internal::Vec<D>& S = cp.point;
+      if constexpr(D == 2) {
+        gradients[i][0] = -g[1] * S[0] * S[0];
+      } else {
+        const double ct = std::cos(c[2]), st = std::sin(c[2]);
+        const double xr = ct * S[0] + st * S[1], yr = -st * S[0] + ct * S[1];
+        gradients[i][0] = -g[2] * xr * xr;
+        gradients[i][1] = -g[2] * yr * yr;
+        gradients[i][2] = -(g[1] * S[0] - g[0] * S[1]); // the surface turns about e_3
+      }
+    }
+  }
+
 private:
   static Closest_point<2> closest_point_2(double k, const internal::Vec<2>& x) {
     double roots[3];
@@ -218,23 +243,39 @@ private:
     return (X - P) * (X - P) + (Y - Q) * (Y - Q) + S * S;
   }
 
+  static void gradient(double A, double B, double P, double Q, double R, double X, double Y, double& g0, double& g1) {
+    const double S = A * X * X + B * Y * Y - R;
+    g0 = (X - P) + 2. * A * X * S;
+    g1 = (Y - Q) + 2. * B * Y * S;
+  }
+
   // Newton's method on the unconstrained problem min_(X,Y) energy, with step halving so that
   // the energy never increases; stops at a point where the Hessian is not positive definite.
+  // Close to the minimum, where energy differences drown in rounding (a very sharp ridge), a
+  // step is also accepted when it reduces the gradient without raising the energy noticeably.
   static double polish(double A, double B, double P, double Q, double R, double& X, double& Y) {
     double E = energy(A, B, P, Q, R, X, Y);
     for(int it = 0; it < 8; ++it) {
       const double S = A * X * X + B * Y * Y - R;
-      const double g0 = (X - P) + 2. * A * X * S, g1 = (Y - Q) + 2. * B * Y * S;
+      double g0, g1;
+      gradient(A, B, P, Q, R, X, Y, g0, g1);
       const double h00 = 1. + 2. * A * S + 4. * A * A * X * X, h11 = 1. + 2. * B * S + 4. * B * B * Y * Y;
       const double h01 = 4. * A * B * X * Y;
       const double det = h00 * h11 - h01 * h01;
       if(!(h00 > 0. && det > 0.)) break;
       double dX = -(h11 * g0 - h01 * g1) / det, dY = -(h00 * g1 - h01 * g0) / det;
       if(!(std::abs(dX) + std::abs(dY) > 1e-17 * (1. + std::abs(X) + std::abs(Y)))) break;
+      const bool small = std::abs(dX) + std::abs(dY) < 1e-6 * (1. + std::abs(X) + std::abs(Y));
       bool improved = false;
       for(int h = 0; h < 4; ++h, dX *= 0.5, dY *= 0.5) {
         const double En = energy(A, B, P, Q, R, X + dX, Y + dY);
-        if(En <= E) {
+        bool accept = En <= E;
+        if(!accept && small && En <= E * (1. + 1e-12) + 1e-300) {
+          double n0, n1;
+          gradient(A, B, P, Q, R, X + dX, Y + dY, n0, n1);
+          accept = n0 * n0 + n1 * n1 < g0 * g0 + g1 * g1;
+        }
+        if(accept) {
           X += dX;
           Y += dY;
           E = En;
@@ -261,8 +302,8 @@ private:
     }
     const double A = a * L, B = b * L, P = p / L, Q = q / L, R = r / L;
 
-    // Candidates (X, Y): the vertical projection, 3 from the cubic, up to 3 per quintic root.
-    constexpr int max_candidates = 24;
+    // Candidates (X, Y): the vertical projection, the root of the secular equation, the ends.
+    constexpr int max_candidates = 4;
     double cx[max_candidates], cy[max_candidates];
     int nc = 0;
     auto add = [&](double X, double Y) {
@@ -273,60 +314,63 @@ private:
       }
     };
     add(P, Q); // the vertical projection, always a valid start
-    // The stationary points of the 2D problem of the dominant curvature (the other one set
-    // to 0): exact when the other one is 0, and good starts when it is small.
+    // The global minimum (the distance to a quadric; Moré 1993, no duality gap for one
+    // quadratic constraint): with s = f - R, stationarity gives X = P / (1 + 2As),
+    // Y = Q / (1 + 2Bs), and the closest point is the root of
+    //   g(s) = A X(s)^2 + B Y(s)^2 - R - s
+    // in the interval I where 1 + 2As > 0 and 1 + 2Bs > 0 (the multipliers for which the
+    // Hessian of the Lagrangian is positive semi-definite). On I, g is strictly decreasing, so
+    // the root is unique and found by Newton's method safeguarded by bisection. When P (or Q)
+    // vanishes, g may stay negative on I: the minimum is then at the end of I, on the circle
+    // (ellipse) of points equidistant from the query (a query near the axis of a paraboloid,
+    // beyond its centre of curvature), from the constraint s + R = A X^2 + B Y^2.
+    // (The paper finds all roots of the equivalent quintic from its companion matrix; this
+    // root is the one it selects, at a fraction of the cost.)
     {
-      double roots[3];
-      if(std::abs(A) >= std::abs(B)) {
-        const int n = internal::parabola_stationary_points(A, P, R - B * Q * Q, roots);
-        for(int i = 0; i < n; ++i) add(roots[i], Q);
-      } else {
-        const int n = internal::parabola_stationary_points(B, Q, R - A * P * P, roots);
-        for(int i = 0; i < n; ++i) add(P, roots[i]);
-      }
-    }
-    // Both curvatures significant: the quintic. With s = f - R, stationarity gives
-    // X = P / (1 + 2As), Y = Q / (1 + 2Bs) and s solves
-    //   A P^2 (1+2Bs)^2 + B Q^2 (1+2As)^2 - (R + s) (1+2As)^2 (1+2Bs)^2 = 0.
-    // As in the paper, its roots are the eigenvalues of the companion matrix (QR algorithm,
-    // Eigen::PolynomialSolver): all roots at once, robust to clustered and multiple roots
-    // (the case P = 0 or Q = 0 gives a double root), fixed-size and allocation-free, whereas
-    // bracketing the roots of a quintic by hand is fragile. Spurious or inaccurate roots are
-    // harmless: every candidate is evaluated on the surface and the best one is polished.
-    const double amax = std::max(std::abs(A), std::abs(B)), amin = std::min(std::abs(A), std::abs(B));
-    if(amin > 1e-6 * amax && amin > 1e-10) {
-      const double u[3] = {1., 4. * A, 4. * A * A}; // (1 + 2As)^2
-      const double v[3] = {1., 4. * B, 4. * B * B}; // (1 + 2Bs)^2
-      double uv[5] = {0, 0, 0, 0, 0};
-      for(int i = 0; i < 3; ++i)
-        for(int j = 0; j < 3; ++j) uv[i + j] += u[i] * v[j];
-      Eigen::Matrix<double, 6, 1> poly;
-      for(int i = 0; i < 6; ++i) poly[i] = 0.;
-      for(int i = 0; i < 3; ++i) poly[i] += A * P * P * v[i] + B * Q * Q * u[i];
-      for(int i = 0; i < 5; ++i) {
-        poly[i] -= R * uv[i];
-        poly[i + 1] -= uv[i];
-      }
-      poly /= poly.cwiseAbs().maxCoeff();
-      Eigen::PolynomialSolver<double, 5> solver;
-      solver.compute(poly);
-      const auto& roots = solver.roots();
-      for(int i = 0; i < 5; ++i) {
-        const double s = roots[i].real();
-        if(!std::isfinite(s) || std::abs(roots[i].imag()) > 1e-4 * (1. + std::abs(s))) continue;
+      const double M = std::abs(A) + std::abs(B) + 2.; // |s| <= |x - vertical projection|
+      double lo = -M, hi = M;
+      double lo_end = -HUGE_VAL, hi_end = HUGE_VAL; // the ends of I
+      if(A > 0) lo_end = std::max(lo_end, -0.5 / A);
+      if(B > 0) lo_end = std::max(lo_end, -0.5 / B);
+      if(A < 0) hi_end = std::min(hi_end, -0.5 / A);
+      if(B < 0) hi_end = std::min(hi_end, -0.5 / B);
+      lo = std::max(lo, lo_end);
+      hi = std::min(hi, hi_end);
+      const auto g = [&](double s, double& dg) {
         const double d1 = 1. + 2. * A * s, d2 = 1. + 2. * B * s;
-        const bool x_ok = d1 != 0., y_ok = d2 != 0.;
-        const double X = x_ok ? P / d1 : 0., Y = y_ok ? Q / d2 : 0.;
-        if(x_ok && y_ok) add(X, Y);
-        // A (nearly) vanishing denominator, when P or Q is (nearly) 0 and the root is (nearly)
-        // double: the quotient is unreliable, and the coordinate comes from the constraint
-        // s + R = A X^2 + B Y^2 instead. Both variants are candidates.
-        if(std::abs(d1) < 1e-3) {
-          const double Xc = std::sqrt(std::max(0., (s + R - B * Y * Y) / A));
+        const double X = P / d1, Y = Q / d2;
+        dg = -4. * A * A * X * X / d1 - 4. * B * B * Y * Y / d2 - 1.;
+        return A * X * X + B * Y * Y - R - s;
+      };
+      double dg;
+      double s = 0.;
+      double gs = g(s, dg);
+      if(gs < 0) hi = s;
+      else lo = s;
+      for(int it = 0; it < 100 && hi - lo > 1e-16 * (1. + std::abs(s)); ++it) {
+        double sn = s - gs / dg;
+        if(!(sn > lo && sn < hi)) sn = 0.5 * (lo + hi); // Newton left the bracket: bisect
+        s = sn;
+        gs = g(s, dg);
+        if(gs == 0.) break;
+        if(gs < 0) hi = s;
+        else lo = s;
+        if(!std::isfinite(gs)) break;
+      }
+      const double d1 = 1. + 2. * A * s, d2 = 1. + 2. * B * s;
+      if(d1 > 0. && d2 > 0.) add(P / d1, Q / d2);
+      // The ends of I, for the degenerate case (P or Q (nearly) zero).
+      for(const double e : {lo_end, hi_end}) {
+        if(!std::isfinite(e)) continue;
+        const bool on_a = (A != 0.) && (e == -0.5 / A);
+        const double da = 1. + 2. * A * e, db = 1. + 2. * B * e;
+        if(on_a) {
+          const double Y = (db != 0.) ? Q / db : 0.;
+          const double Xc = std::sqrt(std::max(0., (e + R - B * Y * Y) / A));
           add(P < 0 ? -Xc : Xc, Y);
-        }
-        if(std::abs(d2) < 1e-3) {
-          const double Yc = std::sqrt(std::max(0., (s + R - A * X * X) / B));
+        } else {
+          const double X = (da != 0.) ? P / da : 0.;
+          const double Yc = std::sqrt(std::max(0., (e + R - A * X * X) / B));
           add(X, Q < 0 ? -Yc : Yc);
         }
       }

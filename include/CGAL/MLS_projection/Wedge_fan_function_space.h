@@ -166,74 +166,142 @@ public:
 
   /// The closest point of `x` (frame coordinates) on the fan `c`.
   Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
-    if constexpr(D == 2) return closest_point_2(c, x);
-    else return closest_point_3(c, x);
+    return project(prepare(c), x, nullptr);
+  }
+
+  /// The closest points of the `n` points `x` on the fan `c` (the fan is prepared once) and,
+  /// when `gradients` is not null, the derivatives of their signed distances with respect to
+  /// the parameters: by the envelope theorem, \f$-g \cdot \partial S/\partial c\f$ at the closest
+  /// point \f$S\f$, with \f$g = (x - S)/d\f$ (the normal when \f$d = 0\f$).
+  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+                      Parameters* gradients) const {
+    const Fan fan = prepare(c);
+    for(std::size_t i = 0; i < n; ++i) out[i] = project(fan, x[i], gradients ? gradients + i : nullptr);
   }
 
 private:
+  using V = internal::Vec<D>;
+
   static double wrap(double t, double lo) { // t modulo 2 pi, in [lo, lo + 2 pi)
     double r = t - 2. * M_PI * std::floor((t - lo) / (2. * M_PI));
     if(r >= lo + 2. * M_PI) r -= 2. * M_PI; // rounding
     return r;
   }
 
-  static Closest_point<2> closest_point_2(const Parameters& c, const internal::Vec<2>& x) {
-    double ta = wrap(c[0], -M_PI / 2), tb = wrap(c[1], -M_PI / 2);
-    if(tb < ta) std::swap(ta, tb);
-    const internal::Vec<2> da(std::cos(ta), std::sin(ta)), db(std::cos(tb), std::sin(tb));
-    const internal::Vec<2> na(-da[1], da[0]), nb(db[1], -db[0]);
+  // A fan prepared for many closest-point queries: the vectors sorted by angle or longitude,
+  // the normals of the pieces, and the derivatives of the vectors by their parameters.
+  struct Fan {
+    std::array<V, number_of_vectors> v;      // sorted vectors
+    std::array<V, number_of_vectors> fn;     // 3D: normal of cone j = (v[j], v[j+1]); 2D: normal of ray j
+    std::array<bool, number_of_vectors> ok;  // 3D: cone j is not degenerate
+    std::array<int, number_of_vectors> order; // index (in the parameters) of the j-th sorted vector
+    std::array<std::array<V, 2>, number_of_vectors> dv; // d v[j] / d (its parameters)
+  };
+
+  static Fan prepare(const Parameters& c) {
+    Fan f;
+    if constexpr(D == 2) {
+      const double t0 = wrap(c[0], -M_PI / 2), t1 = wrap(c[1], -M_PI / 2);
+      f.order = t1 < t0 ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, 1};
+      const double ta = f.order[0] == 0 ? t0 : t1, tb = f.order[0] == 0 ? t1 : t0;
+      f.v[0] = V(std::cos(ta), std::sin(ta));
+      f.v[1] = V(std::cos(tb), std::sin(tb));
+      f.fn[0] = V(-f.v[0][1], f.v[0][0]);
+      f.fn[1] = V(f.v[1][1], -f.v[1][0]);
+      for(int j = 0; j < 2; ++j) {
+        f.ok[j] = true;
+        f.dv[j][0] = V(-f.v[j][1], f.v[j][0]);
+        f.dv[j][1] = V::Zero();
+      }
+    } else {
+      // Sort the vectors by longitude modulo 2 pi (insertion sort: N is small).
+      std::array<double, N> lon;
+      for(int i = 0; i < N; ++i) {
+        lon[i] = wrap(c[2 * i + 1], 0.);
+        f.order[i] = i;
+      }
+      for(int i = 1; i < N; ++i)
+        for(int j = i; j > 0 && lon[f.order[j]] < lon[f.order[j - 1]]; --j) std::swap(f.order[j], f.order[j - 1]);
+      for(int j = 0; j < N; ++j) {
+        const double la = c[2 * f.order[j]], lo = c[2 * f.order[j] + 1];
+        const double cla = std::cos(la), sla = std::sin(la), clo = std::cos(lo), slo = std::sin(lo);
+        f.v[j] = V(cla * clo, cla * slo, sla);
+        f.dv[j][0] = V(-sla * clo, -sla * slo, cla);
+        f.dv[j][1] = V(-cla * slo, cla * clo, 0.);
+      }
+      for(int j = 0; j < N; ++j) {
+        const int k = (j + 1) % N;
+        double gap = lon[f.order[k]] - lon[f.order[j]];
+        if(k == 0) gap += 2. * M_PI;
+        const V n = f.v[j].cross(f.v[k]);
+        const double len = n.norm();
+        f.ok[j] = len > 1e-12;
+        f.fn[j] = f.ok[j] ? V(((gap > M_PI) ? -1. : 1.) * n / len) : V::Zero();
+      }
+    }
+    return f;
+  }
+
+  // The closest point of x on the prepared fan; the foot is sum_j coef[j] v[j] (sorted order).
+  static Closest_point<D> project(const Fan& f, const V& x, Parameters* gradient) {
+    std::array<double, number_of_vectors> coef;
+    coef.fill(0.);
+    Closest_point<D> cp;
+    if constexpr(D == 2) cp = project_2(f, x, coef);
+    else cp = project_3(f, x, coef);
+    internal::set_signed_distance(cp, x);
+    if(gradient) {
+      V g = cp.normal;
+      if(std::abs(cp.signed_distance) > 0.) g = (x - cp.point) / cp.signed_distance;
+      gradient->setZero();
+      for(int j = 0; j < number_of_vectors; ++j) {
+        if(coef[j] == 0.) continue;
+        const int i = f.order[j];
+        if constexpr(D == 2) {
+          (*gradient)[i] = -coef[j] * g.dot(f.dv[j][0]);
+        } else {
+          (*gradient)[2 * i] = -coef[j] * g.dot(f.dv[j][0]);
+          (*gradient)[2 * i + 1] = -coef[j] * g.dot(f.dv[j][1]);
+        }
+      }
+    }
+    return cp;
+  }
+
+  static Closest_point<2> project_2(const Fan& f, const V& x, std::array<double, 2>& coef) {
+    const V &da = f.v[0], &db = f.v[1], &na = f.fn[0], &nb = f.fn[1];
     const double sa = std::max(0., x.dot(da)), sb = std::max(0., x.dot(db));
     const double ea = (x - sa * da).squaredNorm(), eb = (x - sb * db).squaredNorm();
     Closest_point<2> cp;
     const bool a_wins = ea <= eb;
     const double s = a_wins ? sa : sb;
     if(s > 0.) {
-      cp.point = a_wins ? internal::Vec<2>(sa * da) : internal::Vec<2>(sb * db);
+      cp.point = a_wins ? V(sa * da) : V(sb * db);
       cp.normal = a_wins ? na : nb;
+      coef[a_wins ? 0 : 1] = s;
     } else { // the apex
-      cp.point = internal::Vec<2>::Zero();
+      cp.point = V::Zero();
       const bool flat = std::abs(na[0] * nb[1] - na[1] * nb[0]) <= coplanarity_tolerance && na.dot(nb) > 0;
       cp.is_singular = !flat;
-      const internal::Vec<2> sum = na + nb;
+      const V sum = na + nb;
       const double len = sum.norm();
-      cp.normal = (len > 1e-12) ? internal::Vec<2>(sum / len) : na;
+      cp.normal = (len > 1e-12) ? V(sum / len) : na;
     }
-    internal::set_signed_distance(cp, x);
     return cp;
   }
 
-  static Closest_point<3> closest_point_3(const Parameters& c, const internal::Vec<3>& x) {
-    using V3 = internal::Vec<3>;
-    // Sort the vectors by longitude modulo 2 pi (insertion sort: N is small).
-    std::array<double, N> lon;
-    std::array<int, N> order;
-    for(int i = 0; i < N; ++i) {
-      lon[i] = wrap(c[2 * i + 1], 0.);
-      order[i] = i;
-    }
-    for(int i = 1; i < N; ++i)
-      for(int j = i; j > 0 && lon[order[j]] < lon[order[j - 1]]; --j) std::swap(order[j], order[j - 1]);
-    std::array<V3, N> v;   // sorted vectors
-    std::array<V3, N> fn;  // normal of cone j = (v[j], v[j+1]), zero if degenerate
-    std::array<bool, N> ok;
-    for(int j = 0; j < N; ++j) v[j] = direction(c[2 * order[j]], c[2 * order[j] + 1]);
-    for(int j = 0; j < N; ++j) {
-      const int k = (j + 1) % N;
-      double gap = lon[order[k]] - lon[order[j]];
-      if(k == 0) gap += 2. * M_PI;
-      V3 n = v[j].cross(v[k]);
-      const double len = n.norm();
-      ok[j] = len > 1e-12;
-      fn[j] = ok[j] ? V3(((gap > M_PI) ? -1. : 1.) * n / len) : V3::Zero();
-    }
+  static Closest_point<3> project_3(const Fan& f, const V& x, std::array<double, N>& coef) {
+    const auto& v = f.v;
+    const auto& fn = f.fn;
+    const auto& ok = f.ok;
     auto coplanar = [&](int i, int j) {
       return ok[i] && ok[j] && fn[i].dot(fn[j]) > 0 && fn[i].cross(fn[j]).norm() <= coplanarity_tolerance;
     };
 
     // Nearest piece: 0 = apex, 1 = interior of cone `which`, 2 = ray `which`.
     int kind = 0, which = -1;
-    double best = x.squaredNorm();
-    V3 point = V3::Zero();
+    double best = x.squaredNorm(), ca = 0., cb = 0.;
+    V point = V::Zero();
     for(int j = 0; j < N; ++j) {
       if(!ok[j]) continue;
       const int k = (j + 1) % N;
@@ -242,25 +310,28 @@ private:
       if(!(det > 0.)) continue;
       const double alpha = (rj - cjk * rk) / det, beta = (rk - cjk * rj) / det;
       if(alpha < 0. || beta < 0.) continue;
-      const V3 y = alpha * v[j] + beta * v[k];
+      const V y = alpha * v[j] + beta * v[k];
       const double e = (x - y).squaredNorm();
       if(e < best) {
         best = e;
         point = y;
         kind = 1;
         which = j;
+        ca = alpha;
+        cb = beta;
       }
     }
     for(int j = 0; j < N; ++j) {
       const double t = x.dot(v[j]);
       if(!(t > 0.)) continue;
-      const V3 y = t * v[j];
+      const V y = t * v[j];
       const double e = (x - y).squaredNorm();
       if(e < best) {
         best = e;
         point = y;
         kind = 2;
         which = j;
+        ca = t;
       }
     }
 
@@ -268,7 +339,10 @@ private:
     cp.point = point;
     if(kind == 1) {
       cp.normal = fn[which];
+      coef[which] = ca;
+      coef[(which + 1) % N] = cb;
     } else if(kind == 2) {
+      coef[which] = ca;
       const int prev = (which + N - 1) % N;
       if(coplanar(prev, which)) {
         cp.normal = fn[which];
@@ -279,7 +353,7 @@ private:
       }
     } else {
       // The apex: sum the normals of the distinct faces (a run of coplanar cones is one face).
-      V3 sum = V3::Zero();
+      V sum = V::Zero();
       int first = -1;
       bool all_coplanar = true;
       for(int j = 0; j < N; ++j) {
@@ -297,8 +371,7 @@ private:
     }
     const double len = cp.normal.norm();
     if(len > 1e-12) cp.normal /= len;
-    else cp.normal = V3::UnitZ(); // degenerate fan (e.g. all vectors parallel): any unit normal
-    internal::set_signed_distance(cp, x);
+    else cp.normal = V::UnitZ(); // degenerate fan (e.g. all vectors parallel): any unit normal
     return cp;
   }
 };

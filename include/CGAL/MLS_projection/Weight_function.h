@@ -50,6 +50,14 @@ public:
     return s2 * s2 * (4. * t + 1.);
   }
 
+  /// The derivative of the weight with respect to the squared distance, at `d2`.
+  double derivative(double d2) const {
+    if(d2 >= radius_ * radius_) return 0.;
+    if(kind_ == Weight_kind::GAUSSIAN) return -inv_h2_ * std::exp(-d2 * inv_h2_);
+    const double s = 1. - std::sqrt(d2) * inv_r_; // d/d(d2) of (1-t)^4 (4t+1) = -10 (1-t)^3 / R^2
+    return -10. * s * s * s * inv_r_ * inv_r_;
+  }
+
 private:
   Weight_kind kind_;
   double h_, inv_h2_, radius_, inv_r_;

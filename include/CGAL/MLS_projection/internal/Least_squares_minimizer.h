@@ -3,9 +3,10 @@
 //
 // The non-linear optimiser shared by all operators: Eigen's port of MINPACK's
 // Levenberg-Marquardt (unsupported/Eigen/NonLinearOptimization), a trust-region method,
-// with a forward-difference Jacobian. Every MLS energy of the paper is a normalised
-// weighted sum of squares, sum_i (w_i / W) r_i^2, so it is minimised as the sum of
-// squares of the residuals sqrt(w_i / W) r_i, whose weights depend on the parameters.
+// with the caller's Jacobian when it has one, else a forward-difference one. Every MLS
+// energy of the paper is a normalised weighted sum of squares, sum_i (w_i / W) r_i^2, so it
+// is minimised as the sum of squares of the residuals sqrt(w_i / W) r_i, whose weights
+// depend on the parameters.
 
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_LEAST_SQUARES_MINIMIZER_H
 #define CGAL_MLS_PROJECTION_INTERNAL_LEAST_SQUARES_MINIMIZER_H
@@ -14,6 +15,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include <limits>
 #include <utility>
 
 namespace CGAL {
@@ -21,9 +23,17 @@ namespace MLS {
 namespace internal {
 
 struct Minimizer_settings {
-  double tolerance = 1e-12;
+  double tolerance = 1e-12; // relative, on the parameters (MINPACK's xtol) and on the sum of squares (ftol)
+  // When positive: also stop when the lowest sum of squares seen has improved by less than this
+  // fraction over the last `stall_evaluations` evaluations (a minimum at the end of a long,
+  // nearly flat valley, where MINPACK's tests would let the steps crawl along it).
+  double stall_tolerance = 0;
+  int stall_evaluations = 10;
   int max_evaluations = 400;
   double initial_step = 1.; // bound on the first step, in parameter units
+  // Stop as soon as the sum of squares falls below this value (0: never): MINPACK's tests
+  // are relative, and a zero-residual fit would otherwise spend its budget on rounding noise.
+  double absolute_value = 0;
 };
 
 struct Minimizer_report {
@@ -46,22 +56,54 @@ struct Residual_functor {
   Residual_functor(const ResidualFunction* f, int inputs, int values) : f_(f), n_(inputs), m_(values) {}
   int inputs() const { return n_; }
   int values() const { return m_; }
+  // A negative return asks the optimiser to stop; `solution` then holds the best point.
   int operator()(const InputType& x, ValueType& r) const {
     (*f_)(x, r);
+    const double value = r.squaredNorm();
+    if(!(value < best_)) {
+      if(stall_tolerance > 0 && ++since_mark_ >= stall_evaluations) return -1;
+      return 0;
+    }
+    best_ = value;
+    solution = x;
+    if(value < absolute_value) return -1;
+    if(value < mark_ * (1. - stall_tolerance)) { // a real improvement: restart the window
+      mark_ = value;
+      since_mark_ = 0;
+    } else if(stall_tolerance > 0 && ++since_mark_ >= stall_evaluations) {
+      return -1;
+    }
     return 0;
   }
 
   const ResidualFunction* f_;
   int n_, m_;
+  double absolute_value = 0, stall_tolerance = 0;
+  int stall_evaluations = 10;
+  mutable Eigen::VectorXd solution;
+  mutable double best_ = std::numeric_limits<double>::infinity(), mark_ = std::numeric_limits<double>::infinity();
+  mutable int since_mark_ = 0;
 };
 
-/// Minimises the sum of squares of the `m` residuals computed by `residuals(x, r)`
-/// from the start `x0`. `m` must be at least the number of parameters.
-template <class ResidualFunction>
-Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, int m, const Eigen::VectorXd& x0,
-                                         const Minimizer_settings& settings) {
-  using Functor = Eigen::NumericalDiff<Residual_functor<ResidualFunction>>;
-  Functor functor(Residual_functor<ResidualFunction>(&residuals, int(x0.size()), m));
+// Adds the analytic Jacobian `jacobian(x, J)` (m x n) to a residual functor.
+template <class ResidualFunction, class JacobianFunction>
+struct Residual_jacobian_functor : Residual_functor<ResidualFunction> {
+  Residual_jacobian_functor(const ResidualFunction* f, const JacobianFunction* j, int inputs, int values)
+    : Residual_functor<ResidualFunction>(f, inputs, values), j_(j) {}
+  int df(const typename Residual_functor<ResidualFunction>::InputType& x,
+         typename Residual_functor<ResidualFunction>::JacobianType& J) const {
+    (*j_)(x, J);
+    return 0;
+  }
+  const JacobianFunction* j_;
+};
+
+template <class Functor, class ResidualFunction>
+Minimizer_report run_levenberg_marquardt(Functor& functor, const ResidualFunction& residuals, int m,
+                                         const Eigen::VectorXd& x0, const Minimizer_settings& settings) {
+  functor.absolute_value = settings.absolute_value;
+  functor.stall_tolerance = settings.stall_tolerance;
+  functor.stall_evaluations = settings.stall_evaluations;
   Eigen::LevenbergMarquardt<Functor> lm(functor);
   lm.parameters.ftol = settings.tolerance;
   lm.parameters.xtol = settings.tolerance;
@@ -73,9 +115,11 @@ Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, int 
   const Eigen::LevenbergMarquardtSpace::Status status = lm.minimize(report.x);
   report.iterations = int(lm.iter);
   report.evaluations = int(lm.nfev);
-  report.converged = status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation &&
-                     status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
-                     status != Eigen::LevenbergMarquardtSpace::UserAsked;
+  const bool stopped = status == Eigen::LevenbergMarquardtSpace::UserAsked && functor.solution.size() == x0.size();
+  if(stopped) report.x = functor.solution;
+  report.converged = stopped || (status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation &&
+                                      status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
+                                      status != Eigen::LevenbergMarquardtSpace::UserAsked);
   Eigen::VectorXd r(m);
   residuals(report.x, r);
   report.value = r.squaredNorm();
@@ -86,6 +130,25 @@ Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, int 
     report.value = r.squaredNorm();
   }
   return report;
+}
+
+/// Minimises the sum of squares of the `m` residuals computed by `residuals(x, r)`
+/// from the start `x0`, with a forward-difference Jacobian. `m` must be at least the number
+/// of parameters.
+template <class ResidualFunction>
+Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, int m, const Eigen::VectorXd& x0,
+                                         const Minimizer_settings& settings) {
+  using Functor = Eigen::NumericalDiff<Residual_functor<ResidualFunction>>;
+  Functor functor(Residual_functor<ResidualFunction>(&residuals, int(x0.size()), m));
+  return run_levenberg_marquardt(functor, residuals, m, x0, settings);
+}
+
+/// The same with the Jacobian computed by `jacobian(x, J)` (an m x n matrix).
+template <class ResidualFunction, class JacobianFunction>
+Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, const JacobianFunction& jacobian, int m,
+                                         const Eigen::VectorXd& x0, const Minimizer_settings& settings) {
+  Residual_jacobian_functor<ResidualFunction, JacobianFunction> functor(&residuals, &jacobian, int(x0.size()), m);
+  return run_levenberg_marquardt(functor, residuals, m, x0, settings);
 }
 
 } // namespace internal
