@@ -269,7 +269,9 @@ inline void check_ply_header(const std::string& path) {
   const long double available = (long double)(file_size) - (long double)(header_end);
   long double needed = 0;
   for(const Element& e : elements) {
-    needed += (long double)(e.count) * (long double)(is_binary ? e.binary_bytes : e.ascii_bytes);
+    // at least 1 byte per item: CGAL loops over the items of an element without properties too
+    // (a count of -7 read as 2^64 - 7 hung it, found by the fuzzer)
+    needed += (long double)(e.count) * (long double)(std::max<std::size_t>(1, is_binary ? e.binary_bytes : e.ascii_bytes));
     if(needed > available)
       throw Input_error(quote(path) + ": the PLY header declares " + std::to_string(e.count) + " '" + e.name +
                         "' items, more than the " + std::to_string((long long)(available)) +
