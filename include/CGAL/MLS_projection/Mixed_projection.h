@@ -26,7 +26,9 @@ namespace MLS {
 /// data, its extra freedom lowers the energy by a small factor only (it fits a fold into the
 /// noise), whereas at a crease the quadratic cannot follow the data and its energy is larger by
 /// orders of magnitude. So curved regions keep the quadratic's second-order accuracy and creases
-/// are reproduced by the fan. A fit that did not converge loses to one that did.
+/// are reproduced by the fan. A fit that did not converge (its energy is that of the best
+/// point found, or of Levin's fall-back) competes all the same: an exact fan that exhausted its
+/// budget near zero energy must still win over a converged quadratic that cannot fit a crease.
 ///
 /// The result is the result of the kept fit (its `coefficients` are those of its space: their
 /// number tells which); `iterations` adds both.
@@ -90,9 +92,6 @@ public:
   bool prefers_sharp(const Result& smooth, const Result& sharp) const {
     if(!sharp.is_success()) return false;
     if(!smooth.is_success()) return true;
-    const bool smooth_ok = smooth.status == Projection_status::CONVERGED;
-    const bool sharp_ok = sharp.status == Projection_status::CONVERGED;
-    if(smooth_ok != sharp_ok) return sharp_ok;
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
