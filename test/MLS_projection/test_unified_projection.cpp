@@ -368,6 +368,53 @@ MLS_TEST(projection_property_of_the_closest_point_operators) {
   MLS_CHECK_LE(worst[3], 1e-8);
 }
 
+// The mixed space's complexity penalty: on a sampled cube near edges and corners it keeps the
+// fan (8 coefficients) and is as exact as P_U(wedge); on a noiseless sphere the fan cannot follow
+// the curvature and the quadratic (3 coefficients) is kept.
+MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
+  {
+    const auto pts = cube(0.025);
+    MLS::Mixed_projection<Epick, 3> PM(pts, wendland());
+    const double h = PM.bandwidth();
+    std::mt19937 gen(9);
+    std::uniform_real_distribution<double> u(-0.4, 0.4), off(-0.3, 0.3);
+    double worst = 0;
+    int fan = 0;
+    for(int i = 0; i < 20; ++i) {
+      const V3 x = i < 10 ? V3(0.5, 0.5, 0.5) + 0.5 * h * V3(off(gen), off(gen), off(gen))
+                          : V3(0.5 + 0.3 * h * off(gen), 0.5 + 0.3 * h * off(gen), u(gen));
+      const auto res = PM.project(Epick::Point_3(x[0], x[1], x[2]));
+      MLS_CHECK(res.is_success());
+      worst = std::max(worst, std::abs(cube_distance(eig(res.point))));
+      fan += res.coefficients.size() == 8;
+    }
+    std::cout << "  mixed on the cube: max distance " << worst << " (h = " << h << "), fan kept for " << fan << "/20\n";
+    MLS_CHECK_LE(worst, 1e-9);
+    MLS_CHECK(fan >= 18);
+  }
+  {
+    std::vector<Epick::Point_3> sphere;
+    const int n = 4000;
+    for(int i = 0; i < n; ++i) { // Fibonacci sphere, radius 1
+      const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * M_PI * (3 - std::sqrt(5.));
+      sphere.emplace_back(rho * std::cos(a), rho * std::sin(a), z);
+    }
+    MLS::Mixed_projection<Epick, 3> PM(sphere);
+    int quadratic = 0;
+    double worst = 0;
+    for(int i = 0; i < 40; ++i) {
+      const Epick::Point_3& p = sphere[i * 97 % n];
+      const auto res = PM.project(Epick::Point_3(1.02 * p.x(), 1.02 * p.y(), 1.02 * p.z()));
+      quadratic += res.coefficients.size() == 3;
+      worst = std::max(worst, std::abs(eig(res.point).norm() - 1));
+    }
+    std::cout << "  mixed on a sphere: quadratic kept for " << quadratic << "/40, max distance " << worst
+              << " (h = " << PM.bandwidth() << ")\n";
+    MLS_CHECK(quadratic == 40);
+    MLS_CHECK_LE(worst, 1e-3 * PM.bandwidth());
+  }
+}
+
 MLS_TEST(sequential_equals_parallel_unified) {
   const auto pts = cube(0.05);
   MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(pts);
