@@ -198,6 +198,8 @@ public:
   /// \f$g = (x - S)/d\f$ (the normal when \f$d = 0\f$).
   void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
                       Parameters* gradients) const {
+    const double theta = D == 3 ? c[D == 3 ? 2 : 0] : 0.; // the angle of the principal axes (3D)
+    const double ct = std::cos(theta), st = std::sin(theta);
     for(std::size_t i = 0; i < n; ++i) {
       out[i] = closest_point(c, x[i]);
       if(!gradients) continue;
@@ -208,7 +210,6 @@ public:
       if constexpr(D == 2) {
         gradients[i][0] = -g[1] * S[0] * S[0];
       } else {
-        const double ct = std::cos(c[2]), st = std::sin(c[2]);
         const double xr = ct * S[0] + st * S[1], yr = -st * S[0] + ct * S[1];
         gradients[i][0] = -g[2] * xr * xr;
         gradients[i][1] = -g[2] * yr * yr;
