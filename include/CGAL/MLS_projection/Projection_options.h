@@ -14,7 +14,9 @@ namespace MLS {
 /// moderately noisy scans; every field is documented in the user manual.
 struct Projection_options {
   /// The bandwidth \f$h\f$ of the weight function. 0 (default): derived from the data
-  /// as the mean distance from an input point to its `k`-th nearest neighbour.
+  /// as the mean distance from an input point to its `k`-th nearest neighbour. A bandwidth
+  /// above \f$10^{150}\f$ (whose square times the support would overflow) is not usable: every
+  /// projection then fails with `DEGENERATE_NEIGHBORHOOD`.
   double bandwidth = 0;
   /// The number of neighbours used to derive \f$h\f$ and for the initial weighted PCA.
   /// 0 (default): 6 for curves in 2D, 16 for surfaces in 3D.

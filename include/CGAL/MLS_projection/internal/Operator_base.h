@@ -57,7 +57,8 @@ public:
   const std::shared_ptr<const Samples>& shared_samples() const { return samples_; }
 
 protected:
-  bool has_bandwidth() const { return h_ > 0 && std::isfinite(h_); }
+  // Energies are in squared length units: h^2 times a few support radii must not overflow.
+  bool has_bandwidth() const { return h_ > 0 && h_ < 1e150; }
   /// Radius gathered around a frame origin: the weight's support plus a margin of one h,
   /// within which the origin may move before the neighbourhood is gathered again.
   double gather_radius() const { return weight_.support_radius() + h_; }
