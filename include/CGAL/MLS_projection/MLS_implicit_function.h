@@ -1,0 +1,544 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_MLS_IMPLICIT_FUNCTION_H
+#define CGAL_MLS_PROJECTION_MLS_IMPLICIT_FUNCTION_H
+
+#include <CGAL/MLS_projection/Closest_point.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Meshing_options.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Projection_result.h>
+#include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/internal/oriented_normals.h>
+#include <CGAL/MLS_projection/project_points.h>
+
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace MLS {
+namespace internal {
+
+/// The largest number of coefficients a cached local fit can hold.
+constexpr int max_local_fit_parameters = 16;
+
+/// The closest point of `y` (frame coordinates) on the graph of the full quadratic polynomial
+/// `c` of `Polynomial_function_space<3>` (the second phase of Levin's projection): Newton
+/// iterations on the squared distance from the vertical foot, with Gauss-Newton steps where its
+/// Hessian is not positive definite, kept only while they decrease the distance.
+inline Closest_point<3> polynomial_graph_closest_point(const double* c, const Vec<3>& y) {
+  const auto f = [&](double u, double v) { return c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v; };
+  double u = y[0], v = y[1];
+  const auto dist2 = [&](double a, double b) {
+    const double dz = f(a, b) - y[2];
+    return (a - y[0]) * (a - y[0]) + (b - y[1]) * (b - y[1]) + dz * dz;
+  };
+  double best = dist2(u, v);
+  for(int it = 0; it < 8; ++it) {
+    const double fu = c[1] + 2 * c[3] * u + c[4] * v, fv = c[2] + c[4] * u + 2 * c[5] * v;
+    const double e = f(u, v) - y[2];
+    const double gu = (u - y[0]) + e * fu, gv = (v - y[1]) + e * fv;
+    double a = 1 + fu * fu + e * 2 * c[3], b = fu * fv + e * c[4], d = 1 + fv * fv + e * 2 * c[5];
+    double det = a * d - b * b;
+    if(!(a > 0 && det > 1e-12)) { // Gauss-Newton
+      a = 1 + fu * fu;
+      b = fu * fv;
+      d = 1 + fv * fv;
+      det = a * d - b * b;
+    }
+    const double du = -(d * gu - b * gv) / det, dv = -(a * gv - b * gu) / det;
+    const double nu = u + du, nv = v + dv, nd = dist2(nu, nv);
+    if(!(nd < best)) break;
+    const bool small = du * du + dv * dv <= 1e-24 * (1 + u * u + v * v);
+    u = nu;
+    v = nv;
+    best = nd;
+    if(small) break;
+  }
+  Closest_point<3> cp;
+  cp.point = Vec<3>(u, v, f(u, v));
+  const double fu = c[1] + 2 * c[3] * u + c[4] * v, fv = c[2] + c[4] * u + 2 * c[5] * v;
+  cp.normal = Vec<3>(-fu, -fv, 1.).normalized();
+  set_signed_distance(cp, y);
+  return cp;
+}
+
+/// How the local fits of a projection operator are evaluated: `unit()` is the length unit of
+/// its coefficients and frame coordinates (\f$h\f$ for the closest-point operators, which work in
+/// units of \f$h\f$, 1 for Levin's), `closest_point()` the closest point on the member with
+/// coefficients `c` (their number: `count`) in frame coordinates, in that unit.
+template <class Projection> struct Local_fit_evaluator;
+
+template <class GeomTraits>
+struct Local_fit_evaluator<Levin_projection<GeomTraits, Polynomial_function_space<3>>> {
+  explicit Local_fit_evaluator(const Levin_projection<GeomTraits, Polynomial_function_space<3>>&) {}
+  static double unit(double) { return 1.; }
+  static bool accepts(int count) { return count == 6; }
+  Closest_point<3> closest_point(const double* c, int, const Vec<3>& y) const {
+    return polynomial_graph_closest_point(c, y);
+  }
+};
+
+template <class GeomTraits>
+struct Local_fit_evaluator<Levin_projection<GeomTraits, Plane_function_space<3>>> {
+  explicit Local_fit_evaluator(const Levin_projection<GeomTraits, Plane_function_space<3>>&) {}
+  static double unit(double) { return 1.; }
+  static bool accepts(int count) { return count == 0; }
+  Closest_point<3> closest_point(const double*, int, const Vec<3>& y) const {
+    return Plane_function_space<3>().closest_point(Plane_function_space<3>::Parameters(), y);
+  }
+};
+
+template <class GeomTraits, class Space, Operator_kind kind>
+struct Local_fit_evaluator<Closest_point_projection<GeomTraits, Space, kind>> {
+  static_assert(Space::number_of_parameters <= max_local_fit_parameters, "too many parameters for a cached local fit");
+  explicit Local_fit_evaluator(const Closest_point_projection<GeomTraits, Space, kind>& p) : space(p.function_space()) {}
+  static double unit(double h) { return h; }
+  static bool accepts(int count) { return count == Space::number_of_parameters; }
+  Closest_point<3> closest_point(const double* c, int, const Vec<3>& y) const {
+    return space.closest_point(Eigen::Map<const typename Space::Parameters>(c), y);
+  }
+  Space space;
+};
+
+template <class GeomTraits, Operator_kind kind, class Smooth, class Sharp>
+struct Local_fit_evaluator<Mixed_projection<GeomTraits, 3, kind, Smooth, Sharp>> {
+  static_assert(Smooth::number_of_parameters != Sharp::number_of_parameters,
+                "the local fits of a mixed space are told apart by their number of coefficients");
+  static_assert(Smooth::number_of_parameters <= max_local_fit_parameters &&
+                  Sharp::number_of_parameters <= max_local_fit_parameters,
+                "too many parameters for a cached local fit");
+  explicit Local_fit_evaluator(const Mixed_projection<GeomTraits, 3, kind, Smooth, Sharp>& p)
+    : smooth(p.smooth_projection().function_space()), sharp(p.sharp_projection().function_space()) {}
+  static double unit(double h) { return h; }
+  static bool accepts(int count) { return count == Smooth::number_of_parameters || count == Sharp::number_of_parameters; }
+  Closest_point<3> closest_point(const double* c, int count, const Vec<3>& y) const {
+    if(count == Sharp::number_of_parameters)
+      return sharp.closest_point(Eigen::Map<const typename Sharp::Parameters>(c), y);
+    return smooth.closest_point(Eigen::Map<const typename Smooth::Parameters>(c), y);
+  }
+  Smooth smooth;
+  Sharp sharp;
+};
+
+/// Wendland's \f$C^2\f$ function \f$(1-t)^4(4t+1)\f$ on \f$[0, 1]\f$, 0 beyond.
+inline double wendland_c2(double t) {
+  if(!(t < 1.)) return 0.;
+  const double s = 1. - t;
+  return s * s * s * s * (4. * t + 1.);
+}
+
+/// \f$3s^2 - 2s^3\f$ of \f$s\f$ clamped to \f$[0, 1]\f$.
+inline double smoothstep(double s) {
+  s = std::clamp(s, 0., 1.);
+  return s * s * (3. - 2. * s);
+}
+
+} // namespace internal
+
+/// \ingroup PkgMLSProjectionRef
+/// The MLS surface of a projection operator as an implicit function, a model of CGAL's
+/// `ImplicitFunction` concept (`FT operator()(Point_3)`), negative inside, for CGAL's meshers
+/// (see `mls_surface_reconstruction()`), in the manner of `Poisson_reconstruction_function`:
+/// cheap to copy (its data are shared, immutable, behind a `std::shared_ptr`), no shared mutable
+/// state, `operator()` is `const` and safe to call from many threads at once.
+///
+/// <b>Orientation.</b> The sign comes from a consistently oriented normal field on the samples:
+/// the input normals when the sample set has some, otherwise normals estimated with
+/// `jet_estimate_normals` and oriented with `mst_orient_normals` (the points the MST leaves
+/// unoriented are oriented away from the centroid; see `internal::estimate_oriented_normals()`).
+/// The normal of each local fit is flipped to agree with the oriented normals of the samples
+/// nearest to its projected point (the sign of the sum of the dot products with the 6 nearest).
+///
+/// <b>Seeds.</b> At construction, the input samples thinned on a grid of cell
+/// `seed_spacing`\f$\cdot h\f$ (one per occupied cell, the first in input order) are projected
+/// once; each successful result keeps its local fit (frame and coefficients) and its oriented
+/// normal. The oriented results are available as `projected_seeds()`, e.g. for the detection of
+/// sharp features (project once, use twice).
+///
+/// <b>Evaluation, `LOCAL_FITS` (default).</b> With \f$s_1, \dots, s_{k+1}\f$ the \f$k+1\f$ nearest
+/// seeds of \f$x\f$ (\f$k\f$ = `blend_neighbors`) and \f$R\f$ the distance to the last,
+/// \f[ f_{\mathrm{fit}}(x) = \frac{\sum_{i \le k} \phi(|x - s_i|/R)\, d_i(x)}{\sum_{i \le k} \phi(|x - s_i|/R)}, \f]
+/// with \f$\phi\f$ Wendland's \f$C^2\f$ function (compact support: the weight of a seed vanishes
+/// when it leaves the \f$k+1\f$ nearest, so \f$f\f$ is continuous) and \f$d_i(x)\f$ the signed
+/// distance from \f$x\f$ to the local fit of seed \f$i\f$ (the function space's
+/// `closest_point()`; for Levin's quadratic, a Newton iteration on the graph). Where the blended
+/// fits are one and the same member (a sampled plane, or a sampled crease with the wedge fan),
+/// \f$f\f$ is that member's exact signed distance. Far from the data, with \f$d\f$ the distance to
+/// the nearest seed and \f$\lambda\f$ a smooth step from 0 at \f$d\f$ = `far_start`\f$\cdot h\f$ to
+/// 1 at `far_end`\f$\cdot h\f$, \f$f = (1 - \lambda) f_{\mathrm{fit}} + \lambda\, f_{\mathrm{far}}\f$,
+/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the nearest seed's normal (cheap, the right sign
+/// for a closed surface, and not an extrapolated quadratic).
+///
+/// <b>Evaluation, `EXACT`.</b> \f$f(x) = \pm|x - P(x)|\f$, \f$P\f$ the projection, the sign that of
+/// \f$(x - P(x))\cdot n\f$ with \f$n\f$ the result's normal oriented as above; where the projection
+/// fails, the far value. As slow as the projection: the reference the local fits are measured
+/// against (manual, section "Meshing").
+///
+/// \tparam Projection `Levin_projection<K, Polynomial_function_space<3>>`,
+///         `Levin_projection<K, Plane_function_space<3>>`, `Closest_point_projection<K, S, kind>`
+///         (e.g. `Unified_projection<K, S>`) or `Mixed_projection<K, 3>`, in 3D
+template <class Projection>
+class MLS_implicit_function {
+  static_assert(Projection::dimension == 3, "MLS_implicit_function: a 3D projection operator");
+  using Evaluator = internal::Local_fit_evaluator<Projection>;
+  using V = internal::Vec<3>;
+  using M = internal::Mat<3>;
+
+public:
+  using Projection_type = Projection;
+  using Geom_traits = typename Projection::Samples::Geom_traits;
+  using FT = typename Geom_traits::FT;
+  using Point_3 = typename Geom_traits::Point_3;
+  using Point = Point_3;
+  using Vector_3 = typename Geom_traits::Vector_3;
+  using Sphere_3 = typename Geom_traits::Sphere_3;
+  using Samples = typename Projection::Samples;
+  using Result = Projection_result<Geom_traits, 3>;
+
+  /// The state after construction.
+  enum class Status {
+    VALID,             ///< ready
+    CANCELLED,         ///< the callback returned `false`
+    TOO_FEW_SEEDS,     ///< fewer than 2 seeds could be projected (too few or degenerate samples)
+    NO_BANDWIDTH       ///< the operator has no bandwidth (fewer than two distinct samples)
+  };
+
+  /// Projects the seeds with `projection` (in parallel with `CGAL::Parallel_tag`) and builds
+  /// the seed tree. `callback` (may be empty) is called from the calling thread with the
+  /// fraction done in [0, 1] (the normal estimation, when needed, is its first 20%); returning
+  /// `false` cancels: `status()` is then `CANCELLED`. Check `is_valid()` before use; an invalid
+  /// function returns 1 everywhere (outside).
+  template <class ConcurrencyTag = Sequential_tag>
+  explicit MLS_implicit_function(const Projection& projection,
+                                 const Implicit_function_options& options = Implicit_function_options(),
+                                 ConcurrencyTag tag = ConcurrencyTag(),
+                                 const std::function<bool(double)>& callback = std::function<bool(double)>()) {
+    auto data = std::make_shared<Data>(projection, options);
+    build(*data, tag, callback);
+    data_ = std::move(data);
+  }
+
+  /// \f$f(p)\f$: negative inside, positive outside, in length units (see the class documentation).
+  FT operator()(const Point_3& p) const {
+    const Data& d = *data_;
+    if(d.status != Status::VALID) return FT(1);
+    if(d.options.mode == Implicit_function_mode::EXACT) return FT(exact_value(p));
+    return FT(local_fit_value(p));
+  }
+
+  /// \f$f(p)\f$ from the local fits, whatever the mode.
+  double local_fit_value(const Point_3& p) const {
+    const Data& d = *data_;
+    if(d.status != Status::VALID) return 1.;
+    const V x = d.seeds->to_local(p);
+    if(!x.allFinite()) return std::numeric_limits<double>::max();
+    thread_local std::vector<std::size_t> idx;
+    const std::size_t k = std::size_t((std::max)(2, d.options.blend_neighbors));
+    d.seeds->k_nearest(x, k + 1, idx);
+    // distances, the nearest seed, and R = the largest distance (the (k+1)-th seed)
+    std::array<double, 64> dist;
+    const std::size_t m = (std::min<std::size_t>)(idx.size(), dist.size());
+    std::size_t nearest = 0;
+    double R = 0;
+    for(std::size_t j = 0; j < m; ++j) {
+      dist[j] = (x - d.fits[idx[j]].point).norm();
+      if(dist[j] < dist[nearest]) nearest = j;
+      R = (std::max)(R, dist[j]);
+    }
+    const Fit& near = d.fits[idx[nearest]];
+    const double dmin = dist[nearest];
+    const double far = ((x - near.point).dot(near.normal) < 0 ? -1. : 1.) * dmin;
+    const double lambda =
+      internal::smoothstep((dmin - d.options.far_start * d.h) / ((d.options.far_end - d.options.far_start) * d.h));
+    if(lambda >= 1. || m < 2) return far;
+    double W = 0, F = 0;
+    for(std::size_t j = 0; j < m; ++j) {
+      const double w = R > 0 ? internal::wendland_c2(dist[j] / R) : 1.;
+      if(!(w > 0)) continue;
+      W += w;
+      F += w * fit_distance(d, d.fits[idx[j]], x);
+    }
+    const double blend = W > 0 ? F / W : far;
+    const double value = (1. - lambda) * blend + lambda * far;
+    return std::isfinite(value) ? value : far;
+  }
+
+  /// \f$f(p)\f$ from a projection of `p`, whatever the mode (see `Implicit_function_mode::EXACT`).
+  double exact_value(const Point_3& p) const {
+    const Data& d = *data_;
+    if(d.status != Status::VALID) return 1.;
+    const Result r = d.projection.project(p);
+    const V x = d.seeds->to_local(p);
+    if(!x.allFinite()) return std::numeric_limits<double>::max();
+    if(!r.is_success()) return far_value(x);
+    const V P = d.seeds->to_local(r.point);
+    V n = internal::Kernel_types<Geom_traits, 3>::to_eigen(r.normal);
+    if(orientation_vote(d, d.projection.samples().to_local(r.point), n) < 0) n = -n;
+    const V e = x - P;
+    const double value = (e.dot(n) < 0 ? -1. : 1.) * e.norm();
+    return std::isfinite(value) ? value : far_value(x);
+  }
+
+  /// A sphere enclosing the data with a margin of `far_end`\f$\cdot h\f$: on and beyond its
+  /// boundary, \f$f\f$ is the far value (positive for a closed, outward oriented surface).
+  Sphere_3 bounding_sphere() const { return data_->sphere; }
+
+  /// A point where \f$f < 0\f$, as deep inside as found: among points \f$s - t\,n\f$ below the
+  /// seeds (\f$t\f$ from \f$h/2\f$ doubling up to the bounding radius, at most 64 seeds), the one of
+  /// lowest \f$f\f$. The centre of the bounding sphere when the function is not valid.
+  Point_3 get_inner_point() const { return data_->inner_point; }
+
+  /// The results of the seed projections, in world coordinates, their normals oriented as the
+  /// function's (outward): the seeds' local fits. Failed projections are left out.
+  const std::vector<Result>& projected_seeds() const { return data_->projected; }
+
+  /// The projection operator.
+  const Projection& projection() const { return data_->projection; }
+  const Implicit_function_options& options() const { return data_->options; }
+  /// The bandwidth \f$h\f$ of the operator.
+  double bandwidth() const { return data_->h; }
+  Status status() const { return data_->status; }
+  bool is_valid() const { return data_->status == Status::VALID; }
+  /// The number of seeds kept (successful projections).
+  std::size_t number_of_seeds() const { return data_->fits.size(); }
+  /// The number of seeds whose projection failed (left out).
+  std::size_t number_of_failed_seeds() const { return data_->failed; }
+  /// What the estimation of oriented normals did (all zero when the samples carry normals).
+  const internal::Oriented_normals_report& normals_report() const { return data_->normals_report; }
+
+private:
+  struct Fit {
+    V point = V::Zero();  // the projected seed (seed-local coordinates)
+    V normal = V::Zero(); // its oriented unit normal
+    V origin = V::Zero(); // the fit's frame origin (seed-local)
+    M axes = M::Identity(); // columns: tangents, frame normal
+    double unit = 1;        // the length unit of the coefficients
+    double sign = 1;        // +1 when the space's "up" side is outside
+    int count = 0;
+    std::array<double, internal::max_local_fit_parameters> c{};
+  };
+
+  struct Data {
+    Data(const Projection& p, const Implicit_function_options& o)
+      : projection(p), evaluator(p), options(o), h(p.bandwidth()) {}
+    Projection projection;
+    Evaluator evaluator;
+    Implicit_function_options options;
+    double h;
+    std::vector<V> sample_normals; // oriented, indexed like the samples (local coordinates)
+    std::shared_ptr<const Samples> seeds; // the projected seeds and their kd-tree
+    std::vector<Fit> fits;                // indexed like `seeds`
+    std::vector<Result> projected;
+    std::size_t failed = 0;
+    internal::Oriented_normals_report normals_report;
+    Sphere_3 sphere;
+    Point_3 inner_point;
+    Status status = Status::VALID;
+  };
+
+  static double fit_distance(const Data& d, const Fit& f, const V& x) {
+    if(f.count == 0) return f.sign * f.axes.col(2).dot(x - f.origin); // a plane (e.g. Levin's fall-back)
+    const V y = f.axes.transpose() * (x - f.origin) / f.unit;
+    return f.sign * f.unit * d.evaluator.closest_point(f.c.data(), f.count, y).signed_distance;
+  }
+
+  double far_value(const V& x) const {
+    const Data& d = *data_;
+    thread_local std::vector<std::size_t> idx;
+    d.seeds->k_nearest(x, 1, idx);
+    if(idx.empty()) return 1.;
+    const Fit& f = d.fits[idx[0]];
+    return ((x - f.point).dot(f.normal) < 0 ? -1. : 1.) * (x - f.point).norm();
+  }
+
+  // The sign of the sum of the dot products of `n` with the oriented normals of the 6 samples
+  // nearest to `q` (sample-local coordinates); 0 when undecided.
+  static double orientation_vote(const Data& d, const V& q, const V& n) {
+    if(d.sample_normals.empty()) return 0.;
+    thread_local std::vector<std::size_t> idx;
+    d.projection.samples().k_nearest(q, 6, idx);
+    double s = 0;
+    for(std::size_t i : idx) s += d.sample_normals[i].dot(n);
+    return s > 0 ? 1. : (s < 0 ? -1. : 0.);
+  }
+
+  template <class ConcurrencyTag>
+  static void build(Data& d, ConcurrencyTag, const std::function<bool(double)>& callback) {
+    using KT = internal::Kernel_types<Geom_traits, 3>;
+    const Samples& samples = d.projection.samples();
+    const std::size_t n = samples.size();
+    d.sphere = Sphere_3(ORIGIN, 1);
+    d.inner_point = ORIGIN;
+    if(!(d.h > 0) || !std::isfinite(d.h)) {
+      d.status = n < 2 ? Status::TOO_FEW_SEEDS : Status::NO_BANDWIDTH;
+      return;
+    }
+    // 1. oriented normals of the samples
+    double start = 0;
+    d.sample_normals.resize(n);
+    if(samples.has_normals()) {
+      for(std::size_t i = 0; i < n; ++i) d.sample_normals[i] = samples.local_normal(i);
+    } else {
+      std::vector<Point_3> world(n);
+      std::vector<Vector_3> normals;
+      for(std::size_t i = 0; i < n; ++i) world[i] = samples.to_world(samples.local_point(i));
+      const auto sub = [&](double f) { return !callback || callback(0.2 * f); };
+      d.normals_report = internal::estimate_oriented_normals<ConcurrencyTag, Geom_traits>(
+        world, normals, static_cast<unsigned int>((std::max)(3, d.options.normal_neighbors)), sub);
+      if(!d.normals_report.completed) {
+        d.status = Status::CANCELLED;
+        return;
+      }
+      for(std::size_t i = 0; i < n && i < normals.size(); ++i) d.sample_normals[i] = KT::to_eigen(normals[i]);
+      start = 0.2;
+    }
+
+    // 2. seeds: one sample per occupied grid cell, the first in input order
+    std::vector<std::size_t> seed_index;
+    const double cell = d.options.seed_spacing * d.h;
+    if(cell > 0) {
+      std::unordered_map<std::uint64_t, std::size_t> occupied;
+      occupied.reserve(n);
+      for(std::size_t i = 0; i < n; ++i) {
+        const V& p = samples.local_point(i);
+        std::uint64_t key = 0;
+        for(int j = 0; j < 3; ++j) {
+          const double c = std::floor(p[j] / cell);
+          const std::int64_t ic = std::int64_t(std::clamp(c, -1e6, 1e6)) + (std::int64_t(1) << 20);
+          key = (key << 21) | (std::uint64_t(ic) & ((std::uint64_t(1) << 21) - 1));
+        }
+        if(occupied.emplace(key, i).second) seed_index.push_back(i);
+      }
+    } else {
+      seed_index.resize(n);
+      for(std::size_t i = 0; i < n; ++i) seed_index[i] = i;
+    }
+
+    // 3. project the seeds, in chunks so that the callback is called often
+    std::vector<Point_3> queries(seed_index.size());
+    for(std::size_t j = 0; j < seed_index.size(); ++j) queries[j] = samples.to_world(samples.local_point(seed_index[j]));
+    std::vector<Result> results;
+    results.reserve(queries.size());
+    const std::size_t chunk = 128;
+    for(std::size_t b = 0; b < queries.size(); b += chunk) {
+      const std::size_t e = (std::min)(queries.size(), b + chunk);
+      std::vector<Point_3> part(queries.begin() + b, queries.begin() + e);
+      project_points<ConcurrencyTag>(d.projection, part, std::back_inserter(results));
+      if(callback && !callback(start + (1. - start) * 0.95 * double(e) / double(queries.size()))) {
+        d.status = Status::CANCELLED;
+        return;
+      }
+    }
+
+    // 4. the local fits, oriented
+    std::vector<Point_3> seed_points;
+    std::vector<Fit> fits;
+    for(std::size_t j = 0; j < results.size(); ++j) {
+      Result& r = results[j];
+      Fit f;
+      f.count = int(r.coefficients.size());
+      // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
+      if(!r.is_success() || !(f.count == 0 || Evaluator::accepts(f.count)) || f.count > internal::max_local_fit_parameters) {
+        ++d.failed;
+        continue;
+      }
+      const V P = samples.to_local(r.point);
+      f.axes.col(0) = KT::to_eigen(r.frame.tangents[0]);
+      f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
+      f.axes.col(2) = KT::to_eigen(r.frame.normal);
+      f.origin = samples.to_local(r.frame.origin);
+      f.unit = Evaluator::unit(d.h);
+      std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
+      // the "up" normal of the fit at the projected point, and its orientation
+      Closest_point<3> cp;
+      if(f.count == 0) {
+        cp.normal = V(0, 0, 1);
+        cp.signed_distance = f.axes.col(2).dot(P - f.origin) / f.unit;
+      } else {
+        cp = d.evaluator.closest_point(f.c.data(), f.count, V(f.axes.transpose() * (P - f.origin) / f.unit));
+      }
+      const V up = f.axes * cp.normal;
+      V rn = KT::to_eigen(r.normal);
+      double vote = orientation_vote(d, P, up);
+      if(vote == 0) vote = up.dot(rn) < 0 ? -1. : 1.; // no sample normal decides: the operator's
+      f.sign = vote;
+      if(rn.dot(up) * vote < 0) rn = -rn;
+      if(!P.allFinite() || !f.origin.allFinite() || !f.axes.allFinite() || !up.allFinite() || !rn.allFinite() ||
+         !(std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h)) { // the fit must pass through its own projection
+        ++d.failed;
+        continue;
+      }
+      r.normal = KT::to_vector(rn);
+      f.point = P; // converted to seed-local coordinates below
+      f.normal = rn;
+      seed_points.push_back(r.point);
+      fits.push_back(f);
+      d.projected.push_back(r);
+    }
+    if(fits.size() < 2) {
+      d.status = Status::TOO_FEW_SEEDS;
+      return;
+    }
+    d.seeds = std::make_shared<const Samples>(seed_points);
+    // sample-local -> seed-local coordinates
+    const V shift = samples.centre() - d.seeds->centre();
+    for(Fit& f : fits) {
+      f.point += shift;
+      f.origin += shift;
+    }
+    // Sample_set drops nothing here (the points are finite), so the indices agree
+    CGAL_assertion(d.seeds->size() == fits.size());
+    d.fits = std::move(fits);
+
+    // 5. bounding sphere and inner point
+    V lo = V::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for(std::size_t i = 0; i < n; ++i) {
+      lo = lo.cwiseMin(samples.local_point(i));
+      hi = hi.cwiseMax(samples.local_point(i));
+    }
+    const V c = 0.5 * (lo + hi);
+    const double radius = 0.5 * (hi - lo).norm() + d.options.far_end * d.h;
+    d.sphere = Sphere_3(samples.to_world(c), radius * radius);
+    d.inner_point = samples.to_world(c);
+    MLS_implicit_function self(d);
+    double best = self.local_fit_value(d.inner_point);
+    const std::size_t stride = (std::max<std::size_t>)(1, d.fits.size() / 64);
+    for(std::size_t i = 0; i < d.fits.size(); i += stride) {
+      const Fit& f = d.fits[i];
+      for(double t = 0.5 * d.h; t <= 2 * radius; t *= 2) {
+        const Point_3 q = d.seeds->to_world(V(f.point - t * f.normal));
+        const double v = self.local_fit_value(q);
+        if(v < best) {
+          best = v;
+          d.inner_point = q;
+        }
+      }
+    }
+    if(callback && !callback(1.)) d.status = Status::CANCELLED;
+  }
+
+  // A non-owning view used during construction (data_ does not exist yet).
+  explicit MLS_implicit_function(Data& d) : data_(std::shared_ptr<Data>(std::shared_ptr<Data>(), &d)) {}
+
+  std::shared_ptr<const Data> data_;
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_MLS_IMPLICIT_FUNCTION_H

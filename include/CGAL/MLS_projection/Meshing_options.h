@@ -1,0 +1,90 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_MESHING_OPTIONS_H
+#define CGAL_MLS_PROJECTION_MESHING_OPTIONS_H
+
+#include <functional>
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionRef
+/// How `MLS_implicit_function` evaluates \f$f(x)\f$.
+enum class Implicit_function_mode {
+  /// Blend the signed distances of \f$x\f$ to the local fits of the nearest seeds (projected
+  /// once, at construction) with a partition of unity: some microseconds per evaluation, the
+  /// default for meshing (see the manual's section "Meshing").
+  LOCAL_FITS,
+  /// Project \f$x\f$ at every evaluation: \f$f(x) = \pm|x - P(x)|\f$. The reference; as slow as
+  /// the projection operator (0.5 ms to 0.2 s per evaluation).
+  EXACT
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// The knobs of `MLS_implicit_function`. Lengths are in units of the bandwidth \f$h\f$ of the
+/// projection operator.
+struct Implicit_function_options {
+  /// The evaluation mode.
+  Implicit_function_mode mode = Implicit_function_mode::LOCAL_FITS;
+  /// The seeds are the input samples thinned on a grid of this cell size (units of \f$h\f$):
+  /// one seed per occupied cell. 0: every input sample is a seed.
+  double seed_spacing = 0.5;
+  /// The number of nearest seeds blended by the partition of unity (at least 2).
+  int blend_neighbors = 8;
+  /// Beyond this distance from the nearest seed (units of \f$h\f$), the value is blended
+  /// towards the far value (distance to the nearest seed, signed by its normal)...
+  double far_start = 1.5;
+  /// ... which it reaches at this distance (units of \f$h\f$).
+  double far_end = 3.;
+  /// The number of neighbours of the normal estimation and orientation (when the samples carry
+  /// no normals): `jet_estimate_normals` and `mst_orient_normals`.
+  int normal_neighbors = 18;
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// The options of `mls_surface_reconstruction()`. Lengths are absolute (the unit of the input);
+/// 0 means "derived from the data", as documented per field.
+struct Meshing_options {
+  /// The projection operator.
+  enum class Operator {
+    LEVIN,  ///< `Levin_projection` (\f$\mathcal{P}_L\f$): fast, smooth; `space` must be `PLANE` or `QUADRATIC`
+    UNIFIED ///< `Unified_projection` or `Mixed_projection` (\f$\mathcal{P}_U\f$): exact at sampled creases with `WEDGE` or `MIXED`
+  };
+  /// The function space.
+  enum class Space {
+    PLANE,     ///< `Plane_function_space`
+    QUADRATIC, ///< `Polynomial_function_space` with `LEVIN`, `Quadratic_function_space` with `UNIFIED`
+    WEDGE,     ///< `Wedge_fan_function_space` (`UNIFIED` only)
+    MIXED      ///< `Mixed_projection` (`UNIFIED` only)
+  };
+  /// The mesher.
+  enum class Mesher {
+    MESH_3,        ///< CGAL's Mesh_3 (`make_mesh_3` on a `Labeled_mesh_domain_3`), manifold output; parallel with `Parallel_tag`
+    SURFACE_MESHER ///< CGAL's Surface_mesher (`make_surface_mesh` on an `Implicit_surface_3`), sequential, no feature protection
+  };
+
+  Operator projection_operator = Operator::UNIFIED;
+  Space space = Space::MIXED;
+  Mesher mesher = Mesher::MESH_3;
+  /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
+  bool features = true;
+  /// The facet size criterion; 0: 2 times the average spacing of the input.
+  double facet_size = 0;
+  /// The facet distance criterion; 0: 0.25 times the average spacing.
+  double facet_distance = 0;
+  /// The facet angle criterion, in degrees (at most 30 for the meshers to terminate).
+  double facet_angle = 25;
+  /// The bandwidth \f$h\f$ of the projection; 0: derived from the data (`Projection_options`).
+  double bandwidth = 0;
+  /// The options of the implicit function (seeds, blending, normals).
+  Implicit_function_options implicit_function;
+  /// Called from the calling thread at the start of each stage ("normals", "seeds", "features",
+  /// "meshing", "output") with the fraction of that stage done; may be empty.
+  std::function<void(const char* stage, double fraction)> stage_progress;
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_MESHING_OPTIONS_H
