@@ -20,5 +20,6 @@
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/project_points.h>
+#include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #endif // CGAL_MLS_PROJECTION_H

@@ -4,6 +4,7 @@
 #ifndef CGAL_MLS_PROJECTION_MESHING_OPTIONS_H
 #define CGAL_MLS_PROJECTION_MESHING_OPTIONS_H
 
+#include <cstddef>
 #include <functional>
 
 namespace CGAL {
@@ -40,6 +41,32 @@ struct Implicit_function_options {
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
   /// no normals): `jet_estimate_normals` and `mst_orient_normals`.
   int normal_neighbors = 18;
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// What `mls_surface_reconstruction()` did, filled when `Meshing_options::report` points to one.
+struct Meshing_report {
+  /// Why the function returned `false` (empty on success): "cancelled", "too few points", ...
+  const char* failure = "";
+  /// The finite input points used.
+  std::size_t points = 0;
+  /// The average spacing (CGAL's `compute_average_spacing`, 6 neighbours).
+  double average_spacing = 0;
+  /// The bandwidth \f$h\f$ of the projection.
+  double bandwidth = 0;
+  /// Points whose estimated normal was oriented by the fall-back (away from the centroid) rather
+  /// than by `mst_orient_normals` (0 when the input has normals).
+  std::size_t normals_by_fallback = 0;
+  /// Seeds kept (successful projections) and failed.
+  std::size_t seeds = 0, failed_seeds = 0;
+  /// Sharp features protected (Mesh_3).
+  std::size_t feature_polylines = 0, corners = 0;
+  /// The criteria used.
+  double facet_size = 0, facet_distance = 0;
+  /// Evaluations of the implicit function by the mesher.
+  std::size_t evaluations = 0;
+  /// Wall-clock seconds of the stages.
+  double seconds_normals = 0, seconds_seeds = 0, seconds_features = 0, seconds_meshing = 0;
 };
 
 /// \ingroup PkgMLSProjectionRef
@@ -82,6 +109,8 @@ struct Meshing_options {
   /// Called from the calling thread at the start of each stage ("normals", "seeds", "features",
   /// "meshing", "output") with the fraction of that stage done; may be empty.
   std::function<void(const char* stage, double fraction)> stage_progress;
+  /// When not null, filled with what the reconstruction did (also on failure).
+  Meshing_report* report = nullptr;
 };
 
 } // namespace MLS

@@ -3,15 +3,13 @@
 //
 // A consistently oriented normal field on a point set, for the sign of the implicit function:
 // the input normals when there are some, otherwise normals estimated with CGAL's
-// jet_estimate_normals (pca_estimate_normals when the jet fit fails) and oriented with
-// mst_orient_normals, with a documented fall-back for the points the MST cannot orient.
+// pca_estimate_normals and oriented with mst_orient_normals, with a documented fall-back for the points the MST cannot orient.
 
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 #define CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
-#include <CGAL/jet_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
@@ -47,9 +45,10 @@ struct Oriented_normals_report {
 /// Estimates unit normals of `points` and orients them consistently; returns one normal per point
 /// in `normals` (same order).
 ///
-/// 1. `jet_estimate_normals` with `k` neighbours (degree 2); for fewer than 6 points, or when
-///    the jet fit gives a non-finite normal, `pca_estimate_normals`; a normal that is still not
-///    finite (coincident or collinear neighbours) is replaced by the direction from the centroid.
+/// 1. `pca_estimate_normals` with `k` neighbours (the normals only orient the implicit function,
+///    for which a plane fit suffices; CGAL 5.5's `jet_estimate_normals` crashes on neighbourhoods
+///    of coincident points); a normal that is not finite (coincident or collinear neighbours)
+///    is replaced by the direction from the centroid.
 /// 2. `mst_orient_normals` with `k` neighbours orients the connected component of the
 ///    Riemannian graph that holds the highest point (its normal is turned up). The points it
 ///    leaves unoriented (other components: several objects, or sparse parts) get new rounds
@@ -101,25 +100,15 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
     return std::isfinite(x) && std::isfinite(y) && std::isfinite(z) && (x * x + y * y + z * z) > 1e-20;
   };
 
-  // 1. estimation. CGAL's estimators call their callback from another thread with
-  // Parallel_tag: ours is only called between the steps, from the calling thread.
+  // 1. estimation: PCA. The normals only orient (the geometry comes from the projection), for
+  // which a plane fit suffices; CGAL 5.5's jet_estimate_normals crashes (an SVD of NaNs) on
+  // neighbourhoods of coincident or collinear points, which PCA survives (arbitrary normal).
   std::vector<Item> items(n);
   for(std::size_t i = 0; i < n; ++i) items[i] = Item(points[i], Vector(0, 0, 0));
   const unsigned int kk = static_cast<unsigned int>((std::min<std::size_t>)(k, n > 1 ? n - 1 : 1));
-  if(n >= 6 && kk >= 5) {
-    CGAL::jet_estimate_normals<ConcurrencyTag>(
-      items, kk, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).geom_traits(GeomTraits()));
-  }
-  if(!step(0.3)) return report;
-  std::size_t bad = 0;
-  for(const Item& it : items) bad += is_usable(it.second) ? 0 : 1;
-  if(bad > 0 && n >= 3 && kk >= 2) {
-    // PCA (a plane, no curvature) where the jet fit failed or was not possible
-    std::vector<Item> pca_items = items;
+  if(n >= 3 && kk >= 2) {
     CGAL::pca_estimate_normals<ConcurrencyTag>(
-      pca_items, kk, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).geom_traits(GeomTraits()));
-    for(std::size_t i = 0; i < n; ++i)
-      if(!is_usable(items[i].second)) items[i].second = pca_items[i].second;
+      items, kk, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).geom_traits(GeomTraits()));
   }
   if(!step(0.35)) return report;
   for(Item& it : items) {

@@ -1,0 +1,289 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// THE one file of the package that calls CGAL's meshers (Mesh_3 and Surface_mesher), so that
+// the API changes of CGAL 6 (named parameters of Mesh_3, the removal of Surface_mesher) touch
+// this file only. Everything here works on a type-erased implicit function
+// (std::function<double(const Point_3&)>): the meshers are instantiated once per kernel and
+// output mesh type, whatever the projection operator.
+
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
+
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_domain_with_polyline_features_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <CGAL/IO/facets_in_complex_2_to_triangle_mesh.h>
+#include <CGAL/Implicit_surface_3.h>
+#include <CGAL/Surface_mesh_complex_2_in_triangulation_3.h>
+#include <CGAL/Surface_mesh_default_criteria_3.h>
+#include <CGAL/Surface_mesh_default_triangulation_3.h>
+#include <CGAL/make_surface_mesh.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/tags.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace MLS {
+namespace internal {
+
+/// The parameters of one mesher run (absolute lengths).
+template <class GeomTraits>
+struct Mesher_input {
+  using Point_3 = typename GeomTraits::Point_3;
+  /// The implicit function, negative inside.
+  std::function<double(const Point_3&)> function;
+  /// A sphere enclosing the surface, \f$f > 0\f$ on its boundary.
+  typename GeomTraits::Sphere_3 bounding_sphere;
+  /// A point where \f$f < 0\f$ (the centre of Surface_mesher's sphere).
+  Point_3 inner_point;
+  /// Segments whose ends have opposite signs of \f$f\f$: Mesh_3's initial points are their
+  /// intersections with the surface (one per connected component at least, if the caller
+  /// provides them); when none crosses, Mesh_3's random segments are used.
+  std::vector<std::pair<Point_3, Point_3>> probes;
+  /// Feature polylines to protect (Mesh_3 only); a closed polyline repeats its first point.
+  std::vector<std::vector<Point_3>> polylines;
+  double facet_size = 0;
+  double facet_distance = 0;
+  double facet_angle = 25;
+  /// Mesh_3's edge size along the polylines (0: `facet_size`).
+  double edge_size = 0;
+  /// The bisection precision of intersections, relative to the bounding sphere's diameter.
+  double relative_error_bound = 1e-6;
+  /// Progress in [0, 1) over the meshing, polled from the calling thread every 1024 evaluations
+  /// of the function; returning `false` stops the mesher (the output is then left empty).
+  std::function<bool(double)> callback;
+  /// The expected number of evaluations, which sets the pace of the reported fraction
+  /// \f$1 - e^{-n/\mathrm{expected}}\f$.
+  double expected_evaluations = 1e6;
+};
+
+/// What one mesher run did.
+struct Mesher_report {
+  bool success = false;
+  bool cancelled = false;
+  std::size_t evaluations = 0;
+  const char* message = "";
+};
+
+struct Meshing_cancelled {};
+
+// The state shared by the copies of a monitored function (meshers copy their function).
+struct Evaluation_monitor {
+  std::atomic<std::size_t> count{0};
+  std::atomic<bool> stop{false};
+  std::thread::id caller = std::this_thread::get_id();
+  const std::function<bool(double)>* callback = nullptr;
+  double expected = 1e6;
+  bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
+};
+
+// The function with an evaluation counter and the cancellation poll.
+template <class GeomTraits, class Point = typename GeomTraits::Point_3>
+struct Monitored_function {
+  using FT = typename GeomTraits::FT;
+  const std::function<double(const typename GeomTraits::Point_3&)>* function;
+  Evaluation_monitor* monitor;
+
+  FT operator()(const Point& p) const {
+    const std::size_t c = monitor->count.fetch_add(1, std::memory_order_relaxed) + 1;
+    if((c & 1023) == 0 && monitor->callback && *monitor->callback && std::this_thread::get_id() == monitor->caller) {
+      if(!(*monitor->callback)(1. - std::exp(-double(c) / monitor->expected)))
+        monitor->stop.store(true, std::memory_order_release);
+    }
+    if(monitor->throw_on_stop && monitor->stop.load(std::memory_order_relaxed)) throw Meshing_cancelled();
+    const double v = (*function)(typename GeomTraits::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    return FT(std::isfinite(v) ? v : 1.); // a NaN would break the bisections: outside
+  }
+};
+
+// Mesh_3's domain: the implicit function's labeled domain with polyline features, whose
+// initial points are the intersections of the probe segments (CGAL 5.5's make_mesh_3 takes no
+// initial points; its own random segments can miss small components or thin objects).
+template <class GeomTraits>
+class Probed_implicit_domain : public Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>> {
+  using Base = Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>>;
+
+public:
+  using Point_3 = typename Base::Point_3;
+  using Segment_3 = typename GeomTraits::Segment_3;
+
+  Probed_implicit_domain(const Labeled_mesh_domain_3<GeomTraits>& domain, std::vector<std::pair<Point_3, Point_3>> probes)
+    : Base(domain), probes_(std::move(probes)) {}
+
+  struct Construct_initial_points {
+    const Probed_implicit_domain* domain;
+    template <class OutputIterator>
+    OutputIterator operator()(OutputIterator pts, const int n = 12) const {
+      int found = 0;
+      for(const auto& s : domain->probes_) {
+        const Segment_3 segment(s.first, s.second);
+        const auto surface = domain->do_intersect_surface_object()(segment);
+        if(!surface) continue;
+        const Point_3 p = std::get<0>(domain->construct_intersection_object()(segment));
+        *pts++ = std::make_pair(p, domain->index_from_surface_patch_index(*surface));
+        ++found;
+      }
+      if(found == 0) return domain->Base::construct_initial_points_object()(pts, n);
+      return pts;
+    }
+  };
+  Construct_initial_points construct_initial_points_object() const { return Construct_initial_points{this}; }
+
+private:
+  std::vector<std::pair<Point_3, Point_3>> probes_;
+};
+
+template <class PolygonMesh>
+bool has_finite_vertices(const PolygonMesh& mesh) {
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for(auto v : vertices(mesh)) {
+    const auto& p = get(vpm, v);
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+       !std::isfinite(CGAL::to_double(p.z())))
+      return false;
+  }
+  return true;
+}
+
+/// Meshes the surface \f$f = 0\f$ with Mesh_3 (`make_mesh_3` on `Labeled_mesh_domain_3::
+/// create_implicit_mesh_domain`, polylines added with `add_features`), criteria facet angle,
+/// size and distance (edge size along the polylines), no cell criteria, no perturbation nor
+/// exudation (only the surface is kept), `manifold()`; the surface facets are written to `mesh`
+/// with `facets_in_complex_3_to_triangle_mesh`. `CGAL::Parallel_tag` runs the parallel Mesh_3
+/// (TBB). On failure or cancellation, `mesh` is cleared.
+template <class ConcurrencyTag, class GeomTraits, class PolygonMesh>
+Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& mesh) {
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  using Labeled = Labeled_mesh_domain_3<GeomTraits>;
+  using Domain = Probed_implicit_domain<GeomTraits>;
+  using Tr = typename Mesh_triangulation_3<Domain, Default, ConcurrencyTag>::type;
+  using C3t3 = Mesh_complex_3_in_triangulation_3<Tr, typename Domain::Corner_index, typename Domain::Curve_index>;
+  using Criteria = Mesh_criteria_3<Tr>;
+  using Point_3 = typename GeomTraits::Point_3;
+  namespace params = CGAL::parameters;
+
+  Mesher_report report;
+  clear(mesh);
+  Evaluation_monitor monitor;
+  monitor.callback = &in.callback;
+  monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  const Monitored_function<GeomTraits> function{&in.function, &monitor};
+
+  Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
+                                                     params::relative_error_bound = in.relative_error_bound),
+                in.probes);
+  bool has_features = false;
+  if(!in.polylines.empty()) {
+    std::vector<std::vector<Point_3>> polylines;
+    for(const auto& l : in.polylines)
+      if(l.size() >= 2) polylines.push_back(l);
+    if(!polylines.empty()) {
+      domain.add_features(polylines.begin(), polylines.end());
+      has_features = true;
+    }
+  }
+  const double edge_size = in.edge_size > 0 ? in.edge_size : in.facet_size;
+  Criteria criteria(params::edge_size = edge_size, params::facet_angle = in.facet_angle,
+                    params::facet_size = in.facet_size, params::facet_distance = in.facet_distance);
+  C3t3 c3t3;
+  const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
+  if(has_features)
+    c3t3 = make_mesh_3<C3t3>(domain, criteria, params::features(domain), params::no_perturb(), params::no_exude(),
+                             params::manifold(), options);
+  else
+    c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
+                             params::manifold(), options);
+  report.evaluations = monitor.count.load();
+  if(monitor.stop.load()) {
+    report.cancelled = true;
+    report.message = "cancelled";
+    return report;
+  }
+  facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
+  if(!has_finite_vertices(mesh)) {
+    clear(mesh);
+    report.message = "non-finite vertex";
+    return report;
+  }
+  report.success = num_faces(mesh) > 0;
+  if(!report.success) report.message = "empty mesh";
+  return report;
+}
+
+/// Meshes the surface \f$f = 0\f$ with Surface_mesher (`make_surface_mesh` on an
+/// `Implicit_surface_3` whose sphere is centred at the inner point and encloses the bounding
+/// sphere, `Surface_mesh_default_criteria_3` with the facet angle, size (Delaunay-ball radius)
+/// and distance, `Manifold_tag`), written to `mesh` with `facets_in_complex_2_to_triangle_mesh`.
+/// Sequential; no feature protection; the initial points come from rays from the inner point, so
+/// a surface made of several components may lose some. On failure or cancellation, `mesh` is
+/// cleared.
+template <class GeomTraits, class PolygonMesh>
+Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, PolygonMesh& mesh) {
+  using STr = Surface_mesh_default_triangulation_3;
+  using C2t3 = Surface_mesh_complex_2_in_triangulation_3<STr>;
+  using SGT = STr::Geom_traits;
+  using Function = Monitored_function<GeomTraits, typename SGT::Point_3>;
+  using Surface = Implicit_surface_3<SGT, Function>;
+
+  Mesher_report report;
+  clear(mesh);
+  Evaluation_monitor monitor;
+  monitor.callback = &in.callback;
+  monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  monitor.throw_on_stop = true;
+  const Function function{&in.function, &monitor};
+
+  const auto& c = in.bounding_sphere.center();
+  const typename SGT::Point_3 inner(CGAL::to_double(in.inner_point.x()), CGAL::to_double(in.inner_point.y()),
+                                    CGAL::to_double(in.inner_point.z()));
+  const typename SGT::Point_3 centre(CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z()));
+  const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius())) +
+                        std::sqrt(CGAL::squared_distance(inner, centre));
+  const double error = in.relative_error_bound;
+  try {
+    STr tr;
+    C2t3 c2t3(tr);
+    Surface surface(function, typename SGT::Sphere_3(inner, radius * radius), error);
+    Surface_mesh_default_criteria_3<STr> criteria(in.facet_angle, in.facet_size, in.facet_distance);
+    make_surface_mesh(c2t3, surface, criteria, Manifold_tag());
+    report.evaluations = monitor.count.load();
+    facets_in_complex_2_to_triangle_mesh(c2t3, mesh);
+  } catch(const Meshing_cancelled&) {
+    clear(mesh);
+    report.evaluations = monitor.count.load();
+    report.cancelled = true;
+    report.message = "cancelled";
+    return report;
+  }
+  if(!has_finite_vertices(mesh)) {
+    clear(mesh);
+    report.message = "non-finite vertex";
+    return report;
+  }
+  report.success = num_faces(mesh) > 0;
+  if(!report.success) report.message = "empty mesh";
+  return report;
+}
+
+} // namespace internal
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H

@@ -1,0 +1,381 @@
+// Meshing (issue 4): the implicit function of the MLS surface and the meshers behind
+// mls_surface_reconstruction(). Levin's operator P_L throughout the meshing tests (about 0.5 ms
+// per seed; the closest-point operators cost 10-180 ms per seed, minutes for a whole sphere):
+// the whole executable must run in under a minute on one core.
+#include "test_framework.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/MLS_implicit_function.h>
+#include <CGAL/MLS_projection/mls_surface_reconstruction.h>
+
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <set>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Levin = CGAL::MLS::Levin_projection<K>;
+using Function = CGAL::MLS::MLS_implicit_function<Levin>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Options = CGAL::MLS::Meshing_options;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Noiseless samples, uniform in area, deterministic.
+std::vector<Point> sphere_points(std::size_t n, double radius = 1.) {
+  CGAL::Random rng(7);
+  std::vector<Point> p;
+  for(std::size_t i = 0; i < n; ++i) {
+    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    p.emplace_back(radius * r * std::cos(t), radius * r * std::sin(t), radius * z);
+  }
+  return p;
+}
+
+constexpr double torus_R = 1., torus_r = 0.4;
+// Uniform in area (rejection on the tube angle: the area element is (R + r cos v)).
+std::vector<Point> torus_points(std::size_t n) {
+  CGAL::Random rng(11);
+  std::vector<Point> p;
+  while(p.size() < n) {
+    const double u = rng.get_double(0, 2 * M_PI), v = rng.get_double(0, 2 * M_PI);
+    if(rng.get_double(0, torus_R + torus_r) > torus_R + torus_r * std::cos(v)) continue;
+    const double w = torus_R + torus_r * std::cos(v);
+    p.emplace_back(w * std::cos(u), w * std::sin(u), torus_r * std::sin(v));
+  }
+  return p;
+}
+double torus_distance(const Point& q) {
+  const double a = std::hypot(q.x(), q.y()) - torus_R;
+  return std::hypot(a, q.z()) - torus_r;
+}
+double sphere_distance(const Point& q) { return std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z())) - 1.; }
+
+struct Mesh_check {
+  bool closed = false, valid = false, self_intersecting = true;
+  std::size_t vertices = 0, faces = 0, distinct_positions = 0;
+  long euler = 0;
+  double max_error = std::numeric_limits<double>::infinity();
+};
+
+template <class Distance>
+Mesh_check check_mesh(const Mesh& m, const Distance& distance) {
+  Mesh_check c;
+  c.vertices = num_vertices(m);
+  c.faces = num_faces(m);
+  c.valid = CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m);
+  c.closed = CGAL::is_closed(m);
+  c.self_intersecting = c.faces == 0 || PMP::does_self_intersect(m);
+  c.euler = long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
+  // A non-manifold vertex of the surface (two fans sharing a point) can only be stored in a
+  // halfedge mesh as two vertices at the same position: count the distinct positions.
+  std::set<std::tuple<double, double, double>> positions;
+  c.max_error = 0;
+  for(auto v : vertices(m)) {
+    const Point& p = m.point(v);
+    positions.emplace(p.x(), p.y(), p.z());
+    const double e = std::abs(distance(p));
+    c.max_error = std::isfinite(e) ? (std::max)(c.max_error, e) : std::numeric_limits<double>::infinity();
+  }
+  c.distinct_positions = positions.size();
+  return c;
+}
+
+void print(const char* name, const Mesh_check& c, double seconds, double h) {
+  std::cout << "  " << name << ": " << c.vertices << " vertices, " << c.faces << " faces, euler " << c.euler
+            << ", closed " << c.closed << ", self-intersecting " << c.self_intersecting << ", max |d(v)| "
+            << c.max_error << " (" << c.max_error / h << " h), " << seconds << " s" << std::endl;
+}
+
+// The checks every mesh of a closed surface of genus g must pass. `bound`: see the callers.
+void check_closed_mesh(const Mesh_check& c, long euler, double bound) {
+  MLS_CHECK(c.faces > 100);
+  MLS_CHECK(c.valid);
+  MLS_CHECK(c.closed);
+  MLS_CHECK(!c.self_intersecting);
+  MLS_CHECK_MSG(c.distinct_positions == c.vertices, "non-manifold vertices (duplicated positions)");
+  MLS_CHECK_MSG(c.euler == euler, "Euler characteristic " + std::to_string(c.euler));
+  MLS_CHECK_LE(c.max_error, bound);
+}
+
+Options levin_options(Options::Mesher mesher = Options::Mesher::MESH_3) {
+  Options o;
+  o.projection_operator = Options::Operator::LEVIN;
+  o.space = Options::Space::QUADRATIC;
+  o.mesher = mesher;
+  return o;
+}
+
+// The bandwidth the operators derive on these inputs (mean distance to the 16th neighbour).
+double derived_h(const std::vector<Point>& p) { return Levin(p).bandwidth(); }
+
+} // namespace
+
+// Vertex error bound on the noiseless sphere (2000 points, h = 0.177): a mesh vertex lies on the
+// zero set of the local-fit function, up to Mesh_3's bisection (1e-6 of the bounding diameter,
+// ~3e-6). That zero set is within 0.01 h of the MLS surface (measured below, test
+// local_fits_agree_with_exact: 0.003 h), and the MLS surface of P_L with a quadratic over noiseless
+// samples of a sphere is within ~1e-3 of it (the quadratic's curvature bias; measured max 4e-4).
+// 0.02 h = 3.5e-3 leaves a margin of 3 over the sum while any wrong vertex (a fold, a vertex
+// of a spurious sheet, a facet corner off the surface) would be off by far more.
+MLS_TEST(sphere_mesh3_closed_manifold_accurate) {
+  const auto p = sphere_points(2000);
+  const double h = derived_h(p);
+  Mesh m;
+  const auto t0 = std::chrono::steady_clock::now();
+  CGAL::MLS::Meshing_report report;
+  Options o = levin_options();
+  o.report = &report;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, o));
+  const Mesh_check c = check_mesh(m, sphere_distance);
+  print("sphere, Mesh_3", c, seconds_since(t0), h);
+  std::cout << "    report: spacing " << report.average_spacing << ", h " << report.bandwidth << ", seeds " << report.seeds
+            << " (" << report.failed_seeds << " failed), normals by fall-back " << report.normals_by_fallback
+            << ", facet size " << report.facet_size << ", distance " << report.facet_distance << ", evaluations "
+            << report.evaluations << "; seconds: normals " << report.seconds_normals << ", seeds " << report.seconds_seeds
+            << ", meshing " << report.seconds_meshing << std::endl;
+  MLS_CHECK(std::string(report.failure).empty());
+  MLS_CHECK(report.seeds > 500 && report.failed_seeds == 0 && report.normals_by_fallback == 0);
+  check_closed_mesh(c, 2, 0.02 * h);
+}
+
+// The same bound and reasoning with Surface_mesher (its bisection: 1e-6 of the sphere radius).
+MLS_TEST(sphere_surface_mesher_closed_manifold_accurate) {
+  const auto p = sphere_points(2000);
+  const double h = derived_h(p);
+  Mesh m;
+  const auto t0 = std::chrono::steady_clock::now();
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin_options(Options::Mesher::SURFACE_MESHER)));
+  const Mesh_check c = check_mesh(m, sphere_distance);
+  print("sphere, Surface_mesher", c, seconds_since(t0), h);
+  check_closed_mesh(c, 2, 0.02 * h);
+}
+
+// The torus (R = 1, r = 0.4, 4000 points, h ~ 0.13): the tube's curvature 1/r = 2.5 is larger
+// than the sphere's, so the quadratic's bias of P_L is larger (it grows like (h/r)^2 h): 0.05 h,
+// still far below any topological or geometric defect (the tube radius is 3 h).
+MLS_TEST(torus_mesh3_closed_manifold_accurate) {
+  const auto p = torus_points(4000);
+  const double h = derived_h(p);
+  Mesh m;
+  const auto t0 = std::chrono::steady_clock::now();
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin_options()));
+  const Mesh_check c = check_mesh(m, torus_distance);
+  print("torus, Mesh_3", c, seconds_since(t0), h);
+  check_closed_mesh(c, 0, 0.05 * h);
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The parallel Mesh_3 (and the parallel normal estimation and seed projection): a valid mesh
+// with the same guarantees as the sequential one (the meshes differ: the parallel refinement
+// order is not deterministic).
+MLS_TEST(sphere_parallel_mesh3_valid) {
+  const auto p = sphere_points(2000);
+  const double h = derived_h(p);
+  Mesh m;
+  const auto t0 = std::chrono::steady_clock::now();
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_tag>(p, m, levin_options()));
+  const Mesh_check c = check_mesh(m, sphere_distance);
+  print("sphere, parallel Mesh_3", c, seconds_since(t0), h);
+  check_closed_mesh(c, 2, 0.02 * h);
+}
+#endif
+
+// The sign of the oracle, without input normals (estimated and oriented by the MST): well inside
+// is negative, well outside positive, on the sphere and on the torus (whose hole is outside).
+MLS_TEST(oracle_sign) {
+  {
+    const Levin levin(sphere_points(2000));
+    const Function f(levin);
+    MLS_CHECK(f.is_valid());
+    for(const Point& q : {Point(0, 0, 0), Point(0.5, 0, 0), Point(0, -0.6, 0.3), Point(0.4, 0.4, -0.4)})
+      MLS_CHECK_MSG(f(q) < 0, "inside the sphere");
+    for(const Point& q : {Point(1.5, 0, 0), Point(0, 0, -1.3), Point(5, 5, 5), Point(-100, 3, 0)})
+      MLS_CHECK_MSG(f(q) > 0, "outside the sphere");
+    MLS_CHECK(f(f.get_inner_point()) < -0.5); // as deep as found: the centre is at depth 1
+    const auto s = f.bounding_sphere();
+    MLS_CHECK(std::sqrt(CGAL::to_double(s.squared_radius())) > 1.);
+  }
+  {
+    const Levin levin(torus_points(4000));
+    const Function f(levin);
+    MLS_CHECK(f.is_valid());
+    MLS_CHECK_LE(f.normals_report().oriented_by_fallback, 0u);
+    for(const Point& q : {Point(1, 0, 0), Point(0, -1, 0), Point(-0.75, 0, 0.1), Point(0.8, 0.8, 0)})
+      MLS_CHECK_MSG(f(q) < 0, "inside the tube");
+    for(const Point& q : {Point(0, 0, 0), Point(0.3, 0, 0), Point(2, 0, 0), Point(1, 0, 0.7), Point(0, 0, 3)})
+      MLS_CHECK_MSG(f(q) > 0, "outside the torus (the hole is outside)");
+  }
+}
+
+// The implicit function from 2 threads (and a copy in each, as the meshers do) gives the values
+// of sequential calls, bit for bit: no shared mutable state.
+MLS_TEST(oracle_concurrent_calls) {
+  const Levin levin(torus_points(4000));
+  const Function f(levin);
+  CGAL::Random rng(3);
+  std::vector<Point> q;
+  for(int i = 0; i < 4000; ++i) q.emplace_back(rng.get_double(-1.6, 1.6), rng.get_double(-1.6, 1.6), rng.get_double(-0.6, 0.6));
+  std::vector<double> sequential(q.size()), a(q.size()), b(q.size());
+  for(std::size_t i = 0; i < q.size(); ++i) sequential[i] = CGAL::to_double(f(q[i]));
+  std::thread t1([&, g = f] { for(std::size_t i = 0; i < q.size(); ++i) a[i] = CGAL::to_double(g(q[i])); });
+  std::thread t2([&, g = f] { for(std::size_t i = q.size(); i-- > 0;) b[i] = CGAL::to_double(g(q[i])); });
+  t1.join();
+  t2.join();
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < q.size(); ++i) differ += (a[i] != sequential[i] || b[i] != sequential[i]) ? 1 : 0;
+  MLS_CHECK_MSG(differ == 0, std::to_string(differ) + " values differ");
+}
+
+// Local fits against the exact mode (a projection per evaluation), P_L on the sphere:
+// (1) at points P(x) of the exact MLS surface, |f_fits| is the distance between the two zero
+//     sets, measured 0.003 h (seeds every h/2) and 0.007 h with noise 0.01; bound 0.02 h;
+// (2) at points within 0.3 h of the surface, |f_fits - f_exact| (same measure).
+// A blend of distances to wrong or misoriented fits would be off by a good fraction of h.
+MLS_TEST(local_fits_agree_with_exact) {
+  const Levin levin(sphere_points(2000));
+  CGAL::MLS::Implicit_function_options o;
+  o.mode = CGAL::MLS::Implicit_function_mode::EXACT;
+  const Function exact(levin, o);
+  const Function fits(levin); // LOCAL_FITS, seeds every h/2
+  const double h = fits.bandwidth();
+  CGAL::Random rng(5);
+  double on_surface = 0, near = 0;
+  for(int i = 0; i < 200; ++i) {
+    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    const double s = 1 + rng.get_double(-0.3, 0.3) * h;
+    const Point x(s * r * std::cos(t), s * r * std::sin(t), s * z);
+    const auto P = levin.project(x);
+    MLS_CHECK(P.is_success());
+    on_surface = (std::max)(on_surface, std::abs(fits.local_fit_value(P.point)));
+    near = (std::max)(near, std::abs(CGAL::to_double(fits(x)) - CGAL::to_double(exact(x))));
+    // the exact value's magnitude is the distance to the projection
+    MLS_CHECK_NEAR(std::abs(CGAL::to_double(exact(x))), std::sqrt(CGAL::squared_distance(x, P.point)), 1e-12);
+  }
+  std::cout << "  local fits vs exact (P_L, sphere): max |f_fits(P(x))| " << on_surface / h << " h, max |f_fits - f_exact| "
+            << near / h << " h" << std::endl;
+  MLS_CHECK_LE(on_surface, 0.02 * h);
+  MLS_CHECK_LE(near, 0.02 * h);
+}
+
+// Where the blended fits are the same exact member, the blend is exact: a sampled right-angle
+// crease z = -|x| with the wedge fan (P_U), whose fits near the crease are all the crease itself
+// (exact fits, energies ~1e-26). The function vanishes on the true surface to rounding (1e-9 h:
+// the closest-point solves are exact to ~1e-13 h), and the exact mode agrees.
+MLS_TEST(local_fits_exact_at_a_sampled_crease) {
+  using Wedge = CGAL::MLS::Unified_projection<K, CGAL::MLS::Wedge_fan_function_space<3>>;
+  std::vector<Point> p;
+  std::vector<Vector> n;
+  const double s = 0.1;
+  for(int i = -8; i <= 8; ++i)
+    for(int j = -8; j <= 8; ++j) {
+      const double x = i * s + (j % 2) * 0.03, y = j * s;
+      p.emplace_back(x, y, -std::abs(x));
+    }
+  const Wedge wedge(p);
+  CGAL::MLS::Implicit_function_options o;
+  o.seed_spacing = 1.5; // few seeds: every P_U projection costs tens of milliseconds
+  const auto t0 = std::chrono::steady_clock::now();
+  const CGAL::MLS::MLS_implicit_function<Wedge> f(wedge, o);
+  MLS_CHECK(f.is_valid());
+  const double h = f.bandwidth();
+  std::size_t on_feature = 0;
+  for(const auto& r : f.projected_seeds()) on_feature += r.is_on_feature ? 1 : 0;
+  double worst = 0;
+  for(double y = -0.3; y <= 0.3; y += 0.05)
+    for(double x = -0.2; x <= 0.2; x += 0.025) worst = (std::max)(worst, std::abs(f.local_fit_value(Point(x, y, -std::abs(x)))));
+  std::cout << "  crease (P_U, wedge): " << f.number_of_seeds() << " seeds (" << on_feature << " on the crease), max |f| on the surface "
+            << worst / h << " h, " << seconds_since(t0) << " s" << std::endl;
+  MLS_CHECK(on_feature > 0);
+  MLS_CHECK_LE(worst, 1e-9 * h);
+  // sign: above the roof is outside for the orientation the MST chose (+z at the top)
+  MLS_CHECK(f(Point(0, 0, 0.1)) > 0);
+  MLS_CHECK(f(Point(0, 0, -0.1)) < 0);
+}
+
+// Cancellation: a callback returning false during the seeds, or during the meshing, makes the
+// function return false with an empty mesh; with both meshers.
+MLS_TEST(cancellation) {
+  const auto p = sphere_points(2000);
+  for(const double at : {0.3, 0.7}) {
+    for(const auto mesher : {Options::Mesher::MESH_3, Options::Mesher::SURFACE_MESHER}) {
+      Mesh m;
+      double last = 0;
+      bool monotone = true;
+      const std::function<bool(double)> cb = [&](double f) {
+        monotone &= f >= last && f <= 1;
+        last = f;
+        return f < at;
+      };
+      const bool ok = CGAL::MLS::mls_surface_reconstruction(p, m, levin_options(mesher), CGAL::parameters::callback(cb));
+      MLS_CHECK(!ok);
+      MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
+      MLS_CHECK(monotone);
+      MLS_CHECK(last >= at && last < at + 0.2); // stopped soon after
+    }
+  }
+  // a callback that never cancels sees 1 at the end
+  Mesh m;
+  double last = 0;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(
+    p, m, levin_options(), CGAL::parameters::callback(std::function<bool(double)>([&](double f) { last = f; return true; }))));
+  MLS_CHECK_NEAR(last, 1., 1e-12);
+}
+
+// Bad input: a clear false, an empty mesh, no crash; non-finite points are ignored.
+MLS_TEST(bad_input) {
+  Mesh m;
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(std::vector<Point>(), m));
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(std::vector<Point>(5, Point(1, 2, 3)), m));
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(std::vector<Point>(100, Point(1, 2, 3)), m)); // all equal
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(std::vector<Point>(50, Point(nan, 0, 0)), m));
+  std::vector<Point> line;
+  for(int i = 0; i < 200; ++i) line.emplace_back(0.01 * i, 0, 0); // collinear: no surface
+  CGAL::MLS::Meshing_report report;
+  Options o = levin_options();
+  o.report = &report;
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(line, m, o));
+  MLS_CHECK(num_faces(m) == 0);
+  std::cout << "  collinear points: " << report.failure << std::endl;
+  MLS_CHECK(!std::string(report.failure).empty());
+  Options wrong = levin_options();
+  wrong.space = Options::Space::MIXED; // Levin's operator fits graphs only
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(sphere_points(500), m, wrong));
+  // NaN points among good ones, with normals given through a normal map
+  std::vector<std::pair<Point, Vector>> pwn;
+  for(const Point& q : sphere_points(2000)) pwn.emplace_back(q, q - CGAL::ORIGIN);
+  pwn.emplace_back(Point(nan, 0, 0), Vector(0, 0, 1));
+  pwn.emplace_back(Point(0, std::numeric_limits<double>::infinity(), 0), Vector(0, 0, 1));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(pwn, m, levin_options(),
+                                                  CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, Vector>>())
+                                                    .normal_map(CGAL::Second_of_pair_property_map<std::pair<Point, Vector>>())));
+  const Mesh_check c = check_mesh(m, sphere_distance);
+  check_closed_mesh(c, 2, 0.02 * derived_h(sphere_points(2000)));
+  // an invalid implicit function is outside everywhere, never NaN
+  const Levin empty{std::vector<Point>()};
+  const Function f(empty);
+  MLS_CHECK(!f.is_valid());
+  MLS_CHECK(f(Point(0, 0, 0)) > 0);
+}
+
+int main(int argc, char** argv) { return mls_test::run_all(argc, argv); }
