@@ -13,7 +13,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -147,11 +146,6 @@ MLS_TEST(empty_input_gives_empty_result) {
 
 namespace {
 
-double env(const char* name, double fallback) { // development knob, removed before commit
-  const char* v = std::getenv(name);
-  return v ? std::atof(v) : fallback;
-}
-
 struct Cube_run {
   Features features;
   double h = 0, seconds = 0;
@@ -161,10 +155,10 @@ struct Cube_run {
 Cube_run run_cube(double sigma, unsigned seed) {
   Cube_run run;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto pts = cube(env("SF_S", 0.0625), sigma, seed);
+  const auto pts = cube(0.0625, sigma, seed);
   MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(pts, wendland());
   run.h = PU.bandwidth();
-  const auto sub = subsample(pts, std::size_t(env("SF_STRIDE", 8)));
+  const auto sub = subsample(pts, 8);
   const auto projected = project(PU, sub);
   const double tp = seconds_since(t0);
   run.features = MLS::detect_sharp_features<CGAL::Parallel_if_available_tag>(PU, projected);
@@ -196,16 +190,26 @@ void check_cube(const Cube_run& run, double vertex_tol, double end_tol, double c
 
 } // namespace
 
+// Noiseless: every crease and apex point is a projection, exact to ~1e-13 h (test_unified_projection
+// finds the same figures), and the resampled vertices between them lie on the straight edges, so
+// 1e-6 (~1e-5 h) only allows for rounding.
 MLS_TEST(noiseless_cube_gives_12_edges_and_8_corners) {
   const Cube_run run = run_cube(0., 1);
   print("noiseless cube", run.features, run.h, run.seconds);
   check_cube(run, 1e-6, 1e-6, 1e-6);
 }
 
+// Noise of deviation sigma = 0.01 (a sixth of the spacing, 0.07 h) on every coordinate. The
+// found creases are those of local fits to ~50 noisy points each: their error is a fraction of
+// sigma (measured 0.002 h; 0.01 h with sigma = 0.02). The tolerance is sigma itself for the
+// vertices, the ends and the corners: a crease no further from the truth than the noise. It is
+// below the clustering spacing (0.25 h), so a vertex chained from the wrong crease or a corner
+// merged from the wrong apex points fails it.
 MLS_TEST(noisy_cube_gives_12_edges_and_8_corners) {
-  const Cube_run run = run_cube(env("SF_SIGMA", 0.003), 2);
+  const double sigma = 0.01;
+  const Cube_run run = run_cube(sigma, 2);
   print("noisy cube", run.features, run.h, run.seconds);
-  check_cube(run, 0.1 * run.h, 0.2 * run.h, 0.2 * run.h);
+  check_cube(run, sigma, sigma, sigma);
 }
 
 // A sphere is smooth: the mixed operator (the tools' default) keeps its quadratic fit, no
@@ -257,18 +261,23 @@ MLS_TEST(single_edge_gives_one_polyline_and_is_deterministic) {
   MLS_CHECK(f.corners.empty());
   if(f.polylines.size() == 1) {
     const auto& pl = f.polylines.front();
-    double worst = 0, lo = 1e9, hi = -1e9;
+    double worst = 0, worst_inside = 0, lo = 1e9, hi = -1e9, where = 0;
     for(const Point& p : pl) {
+      if(std::hypot(p.y(), p.z()) > worst) where = p.x();
+      if(std::abs(p.x()) <= 1) worst_inside = std::max(worst_inside, std::hypot(p.y(), p.z()));
       worst = std::max(worst, std::hypot(p.y(), p.z()));
       lo = std::min(lo, p.x());
       hi = std::max(hi, p.x());
     }
     std::cout << "  ridge: " << pl.size() << " vertices, x from " << lo << " to " << hi << ", max distance to the crease "
-              << worst / h << " h\n";
-    // noiseless: the crease points are exact (1e-9 as in test_unified_projection)
-    MLS_CHECK_LE(worst, 1e-9);
+              << worst / h << " h (at x = " << where << "), on the data's crease " << worst_inside / h << " h\n";
+    // Noiseless: on the data's crease (|x| <= 1) the vertices are exact (1e-9 as in
+    // test_unified_projection). An end may run up to `support_radius` (0.75 h) past the data,
+    // where the fit extrapolates the crease from one side only: measured 2.3e-3 h off; 0.01 h.
+    MLS_CHECK_LE(worst_inside, 1e-9);
+    MLS_CHECK_LE(worst, 0.01 * h);
     // covers the data's crease, x in [-1, 1], up to 2 h at each end (the fits near the end of
-    // the data see one side only) and may not run further than h beyond it
+    // the data see one side only) and runs no further than `support_radius` (0.75 h) beyond it
     MLS_CHECK_LE(lo, -1. + 2 * h);
     MLS_CHECK_LE(1. - 2 * h, hi);
     MLS_CHECK_LE(-1. - h, lo);

@@ -57,6 +57,11 @@ struct Feature_options {
   /// Crease points closer than this (and with directions within `link_angle`) are merged
   /// into one graph node; apex points within `corner_radius` into one corner.
   double cluster_spacing = 0.25;
+  /// Crease and apex points further than this from every input sample are ignored: past the
+  /// end of the data (the border of a scan, a crease running off it), a fit extrapolates its
+  /// crease. The default exceeds the largest distance from the surface to the nearest sample
+  /// (about \f$0.3h\f$ with the default bandwidth, \f$h \approx 2.2\f$ times the spacing).
+  double support_radius = 0.75;
   /// Whether helper points are projected near the creases of the samples' local fits (needs a
   /// projection whose sharp function space is `Wedge_fan_function_space<3, N>`: the unified
   /// operator with the fan, or `Mixed_projection`).
@@ -224,6 +229,7 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
   if(projected_samples.empty() || !(h > 0) || !std::isfinite(h)) return out;
   const double deg = M_PI / 180.;
   const double cos_link = std::cos(options.link_angle * deg);
+  const double support = options.support_radius * h;
 
   std::vector<internal::Crease_point> creases;
   std::vector<V> apices;
@@ -231,6 +237,8 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
     if(!r.is_success() || !r.is_on_feature) return false;
     const V p = KT::to_eigen(r.point), d = KT::to_eigen(r.feature_direction);
     if(!p.allFinite() || !d.allFinite()) return false;
+    // a crease extrapolated beyond the end of the data is not a feature of the data
+    if(!(projection.samples().kth_neighbor_distance(projection.samples().to_local(r.point), 1) <= support)) return false;
     if(d.norm() > 0.5) creases.push_back({p, d.normalized()});
     else apices.push_back(p);
     return true;
