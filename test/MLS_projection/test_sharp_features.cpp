@@ -289,4 +289,30 @@ MLS_TEST(single_edge_gives_one_polyline_and_is_deterministic) {
   MLS_CHECK(same);
 }
 
+// The chaining alone, on synthetic crease nodes (units of h = 1): three straight branches along
+// the axes ending 0.5 from the origin, with no apex point there, meet at a junction corner; the
+// polylines end at it. A fourth, isolated node is left out (no polyline of one vertex).
+MLS_TEST(chaining_finds_a_junction_corner_without_apex) {
+  namespace I = CGAL::MLS::internal;
+  std::vector<I::Crease_point> nodes;
+  for(int axis = 0; axis < 3; ++axis)
+    for(double t = 0.5; t <= 3.01; t += 0.25) {
+      I::Feature_vec p = I::Feature_vec::Zero(), d = I::Feature_vec::Zero();
+      p[axis] = t;
+      d[axis] = axis == 1 ? -1. : 1.; // the sign of a direction does not matter
+      nodes.push_back({p, d});
+    }
+  nodes.push_back({I::Feature_vec(5, 5, 5), I::Feature_vec(1, 0, 0)});
+  std::vector<I::Feature_vec> corners;
+  const I::Chaining_parameters prm{1.5, std::cos(M_PI / 6), 1.0, 2.5, 3.0};
+  const auto chains = I::chain_features(nodes, corners, prm);
+  MLS_CHECK(corners.size() == 1);
+  MLS_CHECK(chains.size() == 3);
+  if(corners.size() == 1) MLS_CHECK_LE(corners[0].norm(), 1e-12);
+  for(const auto& c : chains) {
+    MLS_CHECK(c.size() == 12); // 11 nodes and the corner
+    MLS_CHECK(c.front() == nodes.size() || c.back() == nodes.size());
+  }
+}
+
 int main(int argc, char** argv) { return mls_test::run_all(argc, argv); }

@@ -41,6 +41,7 @@ struct Sharp_features {
     std::size_t helper_queries = 0; ///< helper points projected
     std::size_t helper_hits = 0;    ///< helper projections that landed on a crease or apex
     std::size_t crease_nodes = 0;   ///< crease clusters (graph vertices besides the corners)
+    std::size_t junction_corners = 0; ///< corners found where three branches or more meet, not at an apex point
     std::size_t dropped_polylines = 0; ///< polylines dropped as too short
     std::size_t relaxation_queries = 0; ///< polyline vertices projected back onto the crease
     std::size_t relaxed = 0;        ///< of which landed on a crease and were moved
@@ -337,7 +338,24 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
   prm.corner_radius = options.corner_radius * h;
   prm.corner_link_radius = options.corner_link_radius * h;
   prm.gap_radius = options.gap_radius * h;
+  const std::size_t apex_corners = corners.size();
   const std::vector<std::vector<std::size_t>> chains = internal::chain_features(nodes, corners, prm);
+  // Corners found at junctions of branches (no apex point there): moved to their projection
+  // when that is an apex within `relaxation_tolerance`.
+  if(corners.size() > apex_corners) {
+    std::vector<Point> queries;
+    for(std::size_t c = apex_corners; c < corners.size(); ++c) queries.push_back(KT::to_point(corners[c]));
+    std::vector<Result> snapped;
+    project_points<ConcurrencyTag>(projection, queries, std::back_inserter(snapped));
+    for(std::size_t q = 0; q < snapped.size(); ++q) {
+      const Result& r = snapped[q];
+      V& x = corners[apex_corners + q];
+      if(!r.is_success() || !r.is_on_feature || r.feature_direction != NULL_VECTOR) continue;
+      const V p = KT::to_eigen(r.point);
+      if(p.allFinite() && (p - x).norm() <= options.relaxation_tolerance * h) x = p;
+    }
+    out.statistics.junction_corners = corners.size() - apex_corners;
+  }
   out.statistics.crease_nodes = nodes.size();
   const std::size_t first_corner = nodes.size();
   const auto position = [&](std::size_t v) { return v < first_corner ? nodes[v].point : corners[v - first_corner]; };

@@ -166,7 +166,7 @@ struct Chaining_parameters {
 // sequences of vertex indices (a closed one repeats its first vertex), split at the corners and
 // at vertices of degree other than 2, in a deterministic order.
 inline std::vector<std::vector<std::size_t>> chain_features(std::vector<Crease_point>& nodes,
-                                                            const std::vector<Feature_vec>& corners,
+                                                            std::vector<Feature_vec>& corners,
                                                             const Chaining_parameters& prm) {
   // drop the nodes inside a corner's ball
   {
@@ -229,6 +229,59 @@ inline std::vector<std::vector<std::size_t>> chain_features(std::vector<Crease_p
   };
   link_pass(prm.link_radius, false);
   link_pass(prm.gap_radius, true);
+  // Junctions: where three branch ends or more, far from every known corner, point at a common
+  // point (their lines pass within corner_radius / 2 of each other, less than corner_link_radius
+  // ahead of each end), a corner is added at the least-squares point of their lines. This finds
+  // the corners no projection put on an apex.
+  {
+    std::vector<std::size_t> ends;
+    std::vector<Feature_vec> ray; // the direction of the free side, away from the branch
+    for(std::size_t i = 0; i < n; ++i) {
+      if(linked[i][0] == linked[i][1]) continue;
+      bool near_corner = false;
+      for(const Feature_vec& c : corners) near_corner |= (c - nodes[i].point).norm() <= prm.corner_link_radius;
+      if(near_corner) continue;
+      ends.push_back(i);
+      ray.push_back(linked[i][0] ? Feature_vec(-nodes[i].direction) : nodes[i].direction);
+    }
+    // closest approach of the rays of ends a and b: parameters ta, tb, and the distance
+    const auto approach = [&](std::size_t a, std::size_t b, double& ta, double& tb) {
+      const Feature_vec &pa = nodes[ends[a]].point, &pb = nodes[ends[b]].point, &da = ray[a], &db = ray[b];
+      const double c = da.dot(db), den = 1 - c * c;
+      if(!(den > 1e-9)) return std::numeric_limits<double>::infinity();
+      const Feature_vec w = pa - pb;
+      ta = (c * db.dot(w) - da.dot(w)) / den;
+      tb = (db.dot(w) - c * da.dot(w)) / den;
+      return ((pa + ta * da) - (pb + tb * db)).norm();
+    };
+    std::vector<bool> used(ends.size(), false);
+    for(std::size_t a = 0; a < ends.size(); ++a) {
+      if(used[a]) continue;
+      std::vector<std::size_t> group{a};
+      for(std::size_t b = 0; b < ends.size(); ++b) {
+        if(b == a || used[b] || std::abs(ray[a].dot(ray[b])) >= prm.cos_link_angle) continue;
+        double ta = 0, tb = 0;
+        const double gap = approach(a, b, ta, tb);
+        if(gap <= 0.5 * prm.corner_radius && ta > -0.5 * prm.corner_radius && tb > -0.5 * prm.corner_radius &&
+           ta <= prm.corner_link_radius && tb <= prm.corner_link_radius)
+          group.push_back(b);
+      }
+      if(group.size() < 3) continue;
+      Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+      Feature_vec rhs = Feature_vec::Zero();
+      for(std::size_t k : group) {
+        const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - ray[k] * ray[k].transpose();
+        A += P;
+        rhs += P * nodes[ends[k]].point;
+      }
+      const Feature_vec x = A.ldlt().solve(rhs);
+      if(!x.allFinite()) continue;
+      for(std::size_t k : group) used[k] = true;
+      corners.push_back(x);
+      boost::add_vertex(g);
+    }
+  }
+
   // Branch ends near a corner, pointing at it with a free side, are linked to it: the nearest
   // end of each branch (ends in directions within the link angle of an accepted one are the
   // same branch).
