@@ -312,6 +312,43 @@ MLS_TEST(local_fits_exact_at_a_sampled_crease) {
   MLS_CHECK(f(Point(0, 0, -0.1)) < 0);
 }
 
+// Orientation without normals on two separate spheres and 3 isolated points: the first MST round
+// orients the component of the highest point only, the next rounds the others; the isolated
+// points end in the documented fall-back (away from the centroid) or in a round of their own,
+// never a crash. Every sphere normal must point outward. Then Mesh_3 meshes both spheres (its
+// initial points come from probes at the seeds, so no component is missed): two closed
+// components, Euler characteristic 2 + 2.
+MLS_TEST(two_components_oriented_and_meshed) {
+  std::vector<Point> p;
+  const Vector shift(3, 0, 0.5);
+  for(const Point& q : sphere_points(1500)) p.push_back(q);
+  for(const Point& q : sphere_points(1500)) p.push_back(q + shift);
+  p.emplace_back(10, 10, 10);
+  p.emplace_back(-10, 10, 10);
+  p.emplace_back(10, -10, -10);
+  std::vector<Vector> n;
+  const auto r = CGAL::MLS::internal::estimate_oriented_normals<CGAL::Sequential_tag, K>(p, n, 18);
+  MLS_CHECK(r.completed && n.size() == p.size());
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < 3000 && i < n.size(); ++i) {
+    const Point c = i < 1500 ? CGAL::ORIGIN : CGAL::ORIGIN + shift;
+    wrong += (n[i] * (p[i] - c) > 0) ? 0 : 1;
+  }
+  std::cout << "  two spheres + 3 points: " << r.rounds << " MST rounds, " << r.oriented_by_mst << " oriented by the MST, "
+            << r.oriented_by_fallback << " by the fall-back, " << wrong << " sphere normals inward" << std::endl;
+  MLS_CHECK(r.rounds >= 2);
+  MLS_CHECK(wrong == 0);
+  MLS_CHECK_LE(r.oriented_by_fallback, 3u);
+  Mesh m;
+  std::vector<Point> spheres(p.begin(), p.begin() + 3000);
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(spheres, m, levin_options()));
+  const Mesh_check c = check_mesh(m, [&](const Point& q) {
+    return (std::min)(std::abs(sphere_distance(q)), std::abs(sphere_distance(q - shift)));
+  });
+  print("two spheres, Mesh_3", c, 0., derived_h(spheres));
+  check_closed_mesh(c, 4, 0.02 * derived_h(spheres));
+}
+
 // Cancellation: a callback returning false during the seeds, or during the meshing, makes the
 // function return false with an empty mesh; with both meshers.
 MLS_TEST(cancellation) {

@@ -159,7 +159,7 @@ inline double smoothstep(double s) {
 ///
 /// <b>Orientation.</b> The sign comes from a consistently oriented normal field on the samples:
 /// the input normals when the sample set has some, otherwise normals estimated with
-/// `jet_estimate_normals` and oriented with `mst_orient_normals` (the points the MST leaves
+/// `pca_estimate_normals` and oriented with `mst_orient_normals` (the points the MST leaves
 /// unoriented are oriented away from the centroid; see `internal::estimate_oriented_normals()`).
 /// The normal of each local fit is flipped to agree with the oriented normals of the samples
 /// nearest to its projected point (the sign of the sum of the dot products with the 6 nearest).
@@ -248,7 +248,7 @@ public:
     const V x = d.seeds->to_local(p);
     if(!x.allFinite()) return std::numeric_limits<double>::max();
     thread_local std::vector<std::size_t> idx;
-    const std::size_t k = std::size_t((std::max)(2, d.options.blend_neighbors));
+    const std::size_t k = std::size_t(std::clamp(d.options.blend_neighbors, 2, 63)); // dist holds k + 1
     d.seeds->k_nearest(x, k + 1, idx);
     // distances, the nearest seed, and R = the largest distance (the (k+1)-th seed)
     std::array<double, 64> dist;

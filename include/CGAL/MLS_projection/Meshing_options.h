@@ -31,7 +31,7 @@ struct Implicit_function_options {
   /// The seeds are the input samples thinned on a grid of this cell size (units of \f$h\f$):
   /// one seed per occupied cell. 0: every input sample is a seed.
   double seed_spacing = 0.5;
-  /// The number of nearest seeds blended by the partition of unity (at least 2).
+  /// The number of nearest seeds blended by the partition of unity (clamped to [2, 63]).
   int blend_neighbors = 8;
   /// Beyond this distance from the nearest seed (units of \f$h\f$), the value is blended
   /// towards the far value (distance to the nearest seed, signed by its normal)...
@@ -39,7 +39,7 @@ struct Implicit_function_options {
   /// ... which it reaches at this distance (units of \f$h\f$).
   double far_end = 3.;
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
-  /// no normals): `jet_estimate_normals` and `mst_orient_normals`.
+  /// no normals): `pca_estimate_normals` and `mst_orient_normals`.
   int normal_neighbors = 18;
 };
 
