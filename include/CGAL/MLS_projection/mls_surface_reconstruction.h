@@ -15,17 +15,9 @@
 #include <CGAL/MLS_projection/Quadratic_function_space.h>
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/detect_sharp_features.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
-
-// The detection of sharp features is written by another hand; until its header exists, the
-// features are a hook that adds no polyline.
-#if defined(__has_include)
-#if __has_include(<CGAL/MLS_projection/detect_sharp_features.h>)
-#include <CGAL/MLS_projection/detect_sharp_features.h>
-#define CGAL_MLS_PROJECTION_HAS_DETECT_SHARP_FEATURES 1
-#endif
-#endif
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -56,23 +48,19 @@ template <class K, Operator_kind kind, class Smooth, class Sharp>
 struct finds_creases<Mixed_projection<K, 3, kind, Smooth, Sharp>> : std::true_type {};
 
 /// The sharp-feature polylines (and the number of corners) to protect when meshing `function`:
-/// `detect_sharp_features()` on the seeds the function projected (project once, use twice),
-/// for the operators that find creases; none for the others, or while the detection header is
-/// not available (the hook then adds no polyline).
+/// `detect_sharp_features()` (default `Feature_options`) on the seeds the function projected
+/// (project once, use twice), for the operators that find creases; none for the others.
 template <class ConcurrencyTag, class ImplicitFunction>
 std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(const ImplicitFunction& function,
                                                                                std::size_t& number_of_corners) {
   number_of_corners = 0;
-#ifdef CGAL_MLS_PROJECTION_HAS_DETECT_SHARP_FEATURES
   using Projection = typename ImplicitFunction::Projection_type;
   if constexpr(finds_creases<Projection>::value) {
     auto features = detect_sharp_features<ConcurrencyTag>(function.projection(), function.projected_seeds());
     number_of_corners = features.corners.size();
     return std::move(features.polylines);
   }
-#else
   (void)function;
-#endif
   return {};
 }
 
