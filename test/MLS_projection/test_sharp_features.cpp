@@ -3,7 +3,8 @@
 //
 // Cost: a projection costs 10-100 ms, so every case projects a subsample of its input (the
 // function's documented use) with Wendland's weight (the smaller support), and the shapes are
-// coarse (an edge of the cube is about 7 h long).
+// coarse (an edge of the cube is about 7 h long). Whole test: 46 s on one loaded core (user
+// time 22 s), the mixed cube (twice the cost per projection) half of it.
 
 #include "test_framework.h"
 
@@ -152,16 +153,19 @@ struct Cube_run {
   std::size_t samples = 0, projected = 0;
 };
 
-Cube_run run_cube(double sigma, unsigned seed) {
+// The cube projected with `Projection` (the unified operator with the fan, or the mixed space
+// of the tools and the meshing code).
+template <class Projection>
+Cube_run run_cube(double sigma, unsigned seed, std::size_t stride) {
   Cube_run run;
   const auto t0 = std::chrono::steady_clock::now();
   const auto pts = cube(0.0625, sigma, seed);
-  MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(pts, wendland());
-  run.h = PU.bandwidth();
-  const auto sub = subsample(pts, 8);
-  const auto projected = project(PU, sub);
+  const Projection P(pts, wendland());
+  run.h = P.bandwidth();
+  const auto sub = subsample(pts, stride);
+  const auto projected = project(P, sub);
   const double tp = seconds_since(t0);
-  run.features = MLS::detect_sharp_features<CGAL::Parallel_if_available_tag>(PU, projected);
+  run.features = MLS::detect_sharp_features<CGAL::Parallel_if_available_tag>(P, projected);
   run.seconds = seconds_since(t0);
   run.samples = pts.size();
   run.projected = sub.size();
@@ -193,8 +197,12 @@ void check_cube(const Cube_run& run, double vertex_tol, double end_tol, double c
 // Noiseless: every crease and apex point is a projection, exact to ~1e-13 h (test_unified_projection
 // finds the same figures), and the resampled vertices between them lie on the straight edges, so
 // 1e-6 (~1e-5 h) only allows for rounding.
-MLS_TEST(noiseless_cube_gives_12_edges_and_8_corners) {
-  const Cube_run run = run_cube(0., 1);
+MLS_TEST(noiseless_cube_mixed_gives_12_edges_and_8_corners) {
+  // the mixed space (quadratic or fan per query; its fan fits' coefficients drive the helpers).
+  // With every 16th sample only (96), one corner is missed: the tracing of two of its edges
+  // stops 2.6 h and 3.1 h before it, beyond corner_link_radius, and the third edge's last crease
+  // point, at the corner itself, is reported with a direction, not as an apex.
+  const Cube_run run = run_cube<MLS::Mixed_projection<Epick, 3>>(0., 1, 8);
   print("noiseless cube", run.features, run.h, run.seconds);
   check_cube(run, 1e-6, 1e-6, 1e-6);
 }
@@ -207,7 +215,7 @@ MLS_TEST(noiseless_cube_gives_12_edges_and_8_corners) {
 // merged from the wrong apex points fails it.
 MLS_TEST(noisy_cube_gives_12_edges_and_8_corners) {
   const double sigma = 0.01;
-  const Cube_run run = run_cube(sigma, 2);
+  const Cube_run run = run_cube<MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>>>(sigma, 2, 8);
   print("noisy cube", run.features, run.h, run.seconds);
   check_cube(run, sigma, sigma, sigma);
 }
