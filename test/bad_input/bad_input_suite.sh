@@ -60,6 +60,41 @@ check_generic_output() {
   ! grep -Eqiw 'nan|-nan|inf|-inf|infinity' "$1" || { echo "NaN or inf in the output"; return 1; }
 }
 
+# mls_mesh: an OFF triangle mesh, "OFF", "V F 0", V lines of 3 numbers, F lines "3 i j k"
+# (blank lines aside), every number finite.
+off_lines() { awk 'NF > 0 && $1 !~ /^#/' "$1"; }
+check_mls_mesh_output() {
+  local file=$1 v f
+  [ "$(head -n 1 "$file")" = "OFF" ] || { echo "not an OFF file"; return 1; }
+  read -r v f _ < <(off_lines "$file" | sed -n 2p)
+  [ "$v" -gt 0 ] && [ "$f" -gt 0 ] || { echo "empty mesh"; return 1; }
+  off_lines "$file" | awk -v v="$v" -v f="$f" 'NR > 2 && NR <= 2 + v && NF != 3 { print "vertex line " NR; exit 1 }
+    NR > 2 + v && NR <= 2 + v + f && ($1 != 3 || NF != 4) { print "facet line " NR; exit 1 }' || return 1
+  check_finite_numbers "$file"
+}
+# mls_mesh: every vertex of the OFF FILE within TOL (relative) of the sphere of radius R at (OX, OY, OZ).
+mesh_on_sphere() { # TOL R OX OY OZ FILE
+  local e
+  e=$(off_lines "$6" | awk -v R="$2" -v ox="$3" -v oy="$4" -v oz="$5" 'NR == 2 { nv = $1 } NR > 2 && NR <= 2 + nv {
+    x = $1 - ox; y = $2 - oy; z = $3 - oz; e = sqrt(x * x + y * y + z * z) / R - 1
+    if(e < 0) e = -e; if(e > m) m = e } END { printf "%.3g\n", m }')
+  awk -v e="$e" -v t="$1" 'BEGIN { exit !(e <= t) }' || { echo "relative distance to the sphere $e > $1"; return 1; }
+  echo "relative distance to the sphere $e"
+}
+# mls_mesh takes 3D inputs only, has no --k, and meshes (a closed surface) rather than projects.
+mls_mesh_outcomes() {
+  expect_override "2 points (2D)" "error 1 two2d.xyz|2D"
+  expect_override "3 points (2D)" "error 1 three2d.xyz|2D"
+  expect_override "collinear (2D, a valid curve)" "error 1 line2d.xyz|2D"
+  expect_override "coplanar (3D)" "error 1 plane.xyz|coplanar"
+  expect_override "two far clusters" "ok 3 800"
+  expect_override "offset 1e6" "ok 3 400 mesh_on_sphere 3e-2 1 1e6 -1e6 1e6"
+  expect_override "scale 1e-9" "ok 3 400 mesh_on_sphere 3e-2 1e-9 0 0 0"
+  expect_override "huge k (1e9, more than the points)" "error 2 unknown option|--k"
+  expect_override "k beyond the integer range" "error 2 unknown option|--k"
+  expect_override "tiny h (no neighbour in the support)" "error 1 s.xyz|failed"
+}
+
 # tool_profile: sets OUTPUT_EXT, CHECK_OUTPUT and TOOL_ARGS (appended to every run) for $TOOL.
 # One line per tool. mls_project runs Levin's operator: the suite is about the input handling,
 # which all operators share, and the default closest-point operators cost ~0.1 s per query.
@@ -67,6 +102,7 @@ TOOL_ARGS=()
 tool_profile() {
   case "$TOOL" in
     mls_project) OUTPUT_EXT=xyz; CHECK_OUTPUT=check_mls_project_output; TOOL_ARGS=(--operator levin --space quadratic) ;;
+    mls_mesh) OUTPUT_EXT=off; CHECK_OUTPUT=check_mls_mesh_output; TOOL_ARGS=(--operator levin --quiet); mls_mesh_outcomes ;;
     *) echo "bad_input_suite.sh: unknown tool '$TOOL': add it to tool_profile" >&2; exit 2 ;;
   esac
 }

@@ -205,7 +205,7 @@ protected:
 /// The built-in input of mls_mesh: the box [-a, a] x [-b, b] x [-c, c] (a = 1, b = 0.6, c = 0.4)
 /// whose edge {x = a, z = c} is rounded by a quarter-cylinder fillet of radius rf = 0.25 (axis
 /// along y), with a cylindrical bore of radius rb = 0.25 along z through it, centred at
-/// (x, y) = (-0.35, 0). Sharp: 13 straight edges at 90 degrees, the two quarter-circle arcs where
+/// (x, y) = (-0.35, 0). Sharp: 11 straight edges at 90 degrees, the two quarter-circle arcs where
 /// the fillet meets the faces y = +-b, and the bore's two rims (90 degrees, concave along the
 /// bore); 6 corners. The fillet meets the top face and the face x = a tangentially (no crease).
 /// Area 10.63: spacing 0.03 gives about 11800 points.
