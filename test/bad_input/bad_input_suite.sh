@@ -70,7 +70,7 @@ check_mls_mesh_output() {
   [ "$v" -gt 0 ] && [ "$f" -gt 0 ] || { echo "empty mesh"; return 1; }
   off_lines "$file" | awk -v v="$v" -v f="$f" 'NR > 2 && NR <= 2 + v && NF != 3 { print "vertex line " NR; exit 1 }
     NR > 2 + v && NR <= 2 + v + f && ($1 != 3 || NF != 4) { print "facet line " NR; exit 1 }' || return 1
-  check_finite_numbers "$file"
+  check_finite_numbers <(tail -n +2 "$file") # the "OFF" keyword aside
 }
 # mls_mesh: every vertex of the OFF FILE within TOL (relative) of the sphere of radius R at (OX, OY, OZ).
 mesh_on_sphere() { # TOL R OX OY OZ FILE

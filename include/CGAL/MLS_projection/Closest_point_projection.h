@@ -241,14 +241,28 @@ protected:
   // another face, unsupported, near r has zero residuals too (and a C(r) nearer to r); the
   // support test rejects those far from the data, the order of the starts those near it.
   // When no fit is supported (a query beyond the end of the data), all fits compete.
-  // Whether C(r) lies within h/2 of the closest point of some weighted input point.
+  // Whether C(r) lies within h/2 of the closest point of some weighted input point, or, when
+  // h is close to the sample spacing, within the spacing of those closest points around it (on a
+  // grid of spacing s, C(r) can be s/sqrt(2) from every sample).
   bool is_supported(const Fit& f, const Neighborhood<D>& nbh) const {
+    std::vector<V> c;
+    c.reserve(nbh.size());
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t k = 0;
     for(std::size_t i = 0; i < nbh.size(); ++i) {
       if(unit_weight_((nbh.points[i] - f.C).squaredNorm()) <= 0) continue;
-      const V c = f.frame.to_local(space_.closest_point(f.c, f.frame.to_frame(nbh.points[i])).point);
-      if((c - f.C).squaredNorm() <= 0.25) return true;
+      c.push_back(f.frame.to_local(space_.closest_point(f.c, f.frame.to_frame(nbh.points[i])).point));
+      const double d = (c.back() - f.C).squaredNorm();
+      if(d <= 0.25) return true;
+      if(d < nearest) {
+        nearest = d;
+        k = c.size() - 1;
+      }
     }
-    return false;
+    double spacing = std::numeric_limits<double>::infinity();
+    for(std::size_t j = 0; j < c.size(); ++j)
+      if(j != k) spacing = (std::min)(spacing, (c[j] - c[k]).squaredNorm());
+    return std::isfinite(spacing) && nearest <= spacing;
   }
 
   Fit select(const std::vector<Fit>& fits) const {
