@@ -137,7 +137,7 @@ public:
   using typename Base::Vector;
   using typename Base::Samples;
   using typename Base::Result;
-  using Function_space = FunctionSpace;
+  using Function_space = FunctionSpace; ///< the function space; the other types as in `Levin_projection`
 
   /// Builds the sample set of `points` (named parameters `point_map`, `normal_map`, see `Sample_set`).
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters,
@@ -154,12 +154,15 @@ public:
     : Base(samples, options), space_(space), levin_(samples, with_bandwidth(options, this->bandwidth())),
       unit_weight_(options.weight, 1., options.weight == Weight_kind::GAUSSIAN ? options.gaussian_cutoff : options.wendland_support) {}
 
+  /// The function space.
   const FunctionSpace& function_space() const { return space_; }
 
+  /// The fewest input points a projection needs: the parameters of the frame and of the member.
   static constexpr std::size_t minimum_points() {
     return (std::max)(std::size_t(D + 1), std::size_t(T + R + P));
   }
 
+  /// Projects `query`: \f$C_{H,f}(r)\f$ for the frame and member of lowest energy (see the class).
   Result project(const Point& query) const {
     const V r = this->samples().to_local(query);
     if(!r.allFinite()) return this->failure(query, Projection_status::INVALID_QUERY);
@@ -218,6 +221,7 @@ public:
     return make_result(rs, best, unit, nbh, iterations);
   }
 
+  /// Same as `project()`, so that the operator is a function object.
   Result operator()(const Point& query) const { return project(query); }
 
 protected:

@@ -51,7 +51,7 @@ public:
   using typename Base::Vector;
   using typename Base::Samples;
   using typename Base::Result;
-  using Function_space = FunctionSpace;
+  using Function_space = FunctionSpace; ///< the function space of phase 2
 
   /// Builds the sample set of `points` (named parameters `point_map`, `normal_map`, see `Sample_set`).
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters,
@@ -67,14 +67,18 @@ public:
                             const FunctionSpace& space = FunctionSpace())
     : Base(std::move(samples), options), space_(space) {}
 
+  /// The function space of phase 2.
   const FunctionSpace& function_space() const { return space_; }
 
   /// The frame of phase 1, in local (centred) coordinates, as used by the operators built on it.
   struct Frame {
+    /// The origin \f$q\f$ and the unit normal \f$n\f$ of the frame.
+    /// @{
     Vec origin, normal;
-    int iterations = 0;
-    bool converged = false;
-    Projection_status status = Projection_status::CONVERGED;
+    /// @}
+    int iterations = 0;      ///< iterations of the optimiser
+    bool converged = false;  ///< `false` when the optimiser exhausted its budget
+    Projection_status status = Projection_status::CONVERGED; ///< why phase 1 failed, if it did
   };
 
   /// Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood.
@@ -198,6 +202,7 @@ public:
     return res;
   }
 
+  /// Same as `project()`, so that the operator is a function object.
   Result operator()(const Point& query) const { return project(query); }
 
   /// The fewest input points a projection needs: those the function space needs, and at least D.

@@ -200,6 +200,8 @@ class MLS_implicit_function {
   using M = internal::Mat<3>;
 
 public:
+  /// The projection operator, its kernel and the kernel's types, its sample set and result.
+  /// @{
   using Projection_type = Projection;
   using Geom_traits = typename Projection::Samples::Geom_traits;
   using FT = typename Geom_traits::FT;
@@ -209,6 +211,7 @@ public:
   using Sphere_3 = typename Geom_traits::Sphere_3;
   using Samples = typename Projection::Samples;
   using Result = Projection_result<Geom_traits, 3>;
+  /// @}
 
   /// The state after construction.
   enum class Status {
@@ -309,10 +312,13 @@ public:
 
   /// The projection operator.
   const Projection& projection() const { return data_->projection; }
+  /// The options given at construction.
   const Implicit_function_options& options() const { return data_->options; }
   /// The bandwidth \f$h\f$ of the operator.
   double bandwidth() const { return data_->h; }
+  /// The state after construction.
   Status status() const { return data_->status; }
+  /// `status() == Status::VALID`.
   bool is_valid() const { return data_->status == Status::VALID; }
   /// The number of seeds kept (successful projections).
   std::size_t number_of_seeds() const { return data_->fits.size(); }

@@ -58,15 +58,23 @@ struct Meshing_report {
   /// than by `mst_orient_normals` (0 when the input has normals).
   std::size_t normals_by_fallback = 0;
   /// Seeds kept (successful projections) and failed.
+  /// @{
   std::size_t seeds = 0, failed_seeds = 0;
+  /// @}
   /// Sharp features protected (Mesh_3).
+  /// @{
   std::size_t feature_polylines = 0, corners = 0;
+  /// @}
   /// The criteria used.
+  /// @{
   double facet_size = 0, facet_distance = 0;
+  /// @}
   /// Evaluations of the implicit function by the mesher.
   std::size_t evaluations = 0;
   /// Wall-clock seconds of the stages.
+  /// @{
   double seconds_normals = 0, seconds_seeds = 0, seconds_features = 0, seconds_meshing = 0;
+  /// @}
 };
 
 /// \ingroup PkgMLSProjectionRef
@@ -91,8 +99,11 @@ struct Meshing_options {
     SURFACE_MESHER ///< CGAL's Surface_mesher (`make_surface_mesh` on an `Implicit_surface_3`), sequential, no feature protection
   };
 
+  /// The projection operator (default `UNIFIED`).
   Operator projection_operator = Operator::UNIFIED;
+  /// The function space (default `MIXED`).
   Space space = Space::MIXED;
+  /// The mesher (default `MESH_3`).
   Mesher mesher = Mesher::MESH_3;
   /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
   bool features = true;

@@ -46,6 +46,8 @@ class Mixed_projection {
                 "Mixed_projection: both function spaces must have dimension D");
 
 public:
+  /// The two operators combined, and the types of `Closest_point_projection`.
+  /// @{
   using Smooth_projection = Closest_point_projection<GeomTraits, SmoothSpace, kind>;
   using Sharp_projection = Closest_point_projection<GeomTraits, SharpSpace, kind>;
   using FT = typename Smooth_projection::FT;
@@ -53,6 +55,8 @@ public:
   using Vector = typename Smooth_projection::Vector;
   using Samples = typename Smooth_projection::Samples;
   using Result = typename Smooth_projection::Result;
+  /// @}
+  /// The ambient dimension.
   static constexpr int dimension = D;
   /// The default of `sharp_preference`.
   static constexpr double default_sharp_preference = 0.5;
@@ -74,10 +78,12 @@ public:
     CGAL_precondition(sharp_preference > 0 && sharp_preference <= 1);
   }
 
+  /// The fewest input points a projection needs (the larger of the two operators').
   static constexpr std::size_t minimum_points() {
     return (std::max)(Smooth_projection::minimum_points(), Sharp_projection::minimum_points());
   }
 
+  /// Projects `query` with both operators and keeps the sharp result when `prefers_sharp()`.
   Result project(const Point& query) const {
     Result smooth = smooth_.project(query);
     Result sharp = sharp_.project(query);
@@ -86,6 +92,7 @@ public:
     return kept;
   }
 
+  /// Same as `project()`.
   Result operator()(const Point& query) const { return project(query); }
 
   /// Whether the sharp fit `sharp` is kept against the smooth fit `smooth` of the same query.
@@ -95,6 +102,9 @@ public:
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
+  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the options, the shared
+  /// sample set, and the two operators.
+  /// @{
   double bandwidth() const { return smooth_.bandwidth(); }
   double sharp_preference() const { return sharp_preference_; }
   const Projection_options& options() const { return smooth_.options(); }
@@ -102,6 +112,7 @@ public:
   const std::shared_ptr<const Samples>& shared_samples() const { return smooth_.shared_samples(); }
   const Smooth_projection& smooth_projection() const { return smooth_; }
   const Sharp_projection& sharp_projection() const { return sharp_; }
+  /// @}
 
 private:
   static Projection_options with_bandwidth(Projection_options options, double h) {

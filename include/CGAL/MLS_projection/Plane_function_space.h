@@ -23,11 +23,16 @@ namespace MLS {
 template <int D>
 class Plane_function_space {
 public:
+  /// As described by the concept `MLSFunctionSpace`: the ambient dimension, the number of
+  /// parameters of a member, their vector, and a point of the frame's tangent hyperplane.
+  /// @{
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = 0;
   using Parameters = Eigen::Matrix<double, 0, 1>;
   using Domain_point = internal::Vec<D - 1>;
+  /// @}
 
+  /// The name of the space, `"plane"`.
   static const char* name() { return "plane"; }
   /// The fewest neighbours a fit needs.
   static constexpr std::size_t minimum_number_of_points() { return D; }

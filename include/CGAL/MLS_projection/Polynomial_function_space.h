@@ -28,12 +28,18 @@ namespace MLS {
 template <int D>
 class Polynomial_function_space {
 public:
+  /// As described by the concept `MLSFunctionSpace`: the ambient dimension, the number of
+  /// parameters of a member, their vector, and a point of the frame's tangent hyperplane.
+  /// @{
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = (D == 2) ? 3 : 6;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
   using Domain_point = internal::Vec<D - 1>;
+  /// @}
 
+  /// The name of the space, `"quadratic"`.
   static const char* name() { return "quadratic"; }
+  /// The number of coefficients: the fit needs as many points.
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters; }
 
   /// The weighted least-squares fit to `n` points in frame coordinates with weights `w`.

@@ -20,11 +20,11 @@ namespace MLS {
 /// The coefficients of the local function are expressed in this frame.
 template <class GeomTraits, int D>
 struct Local_frame {
-  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;
-  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector;
-  Point origin;
-  Vector normal;
-  std::array<Vector, D - 1> tangents;
+  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;   ///< `Point_2` or `Point_3`
+  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector; ///< `Vector_2` or `Vector_3`
+  Point origin;                        ///< the origin \f$q\f$
+  Vector normal;                       ///< the unit normal, the last axis of the frame
+  std::array<Vector, D - 1> tangents;  ///< the first `D-1` axes, orthonormal, orthogonal to `normal`
 };
 
 /// \ingroup PkgMLSProjectionRef
@@ -32,9 +32,9 @@ struct Local_frame {
 /// `point` is the query itself and `normal` is the null vector: no field is ever NaN.
 template <class GeomTraits, int D>
 struct Projection_result {
-  using FT = typename GeomTraits::FT;
-  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;
-  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector;
+  using FT = typename GeomTraits::FT;                                     ///< the kernel's number type
+  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;   ///< `Point_2` or `Point_3`
+  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector; ///< `Vector_2` or `Vector_3`
 
   /// The projected point \f$P(r)\f$.
   Point point;
@@ -54,8 +54,10 @@ struct Projection_result {
   bool is_on_feature = false;
   /// The crease direction when `is_on_feature` (null otherwise, and at an apex).
   Vector feature_direction = NULL_VECTOR;
+  /// Whether the projection succeeded, and if not, why.
   Projection_status status = Projection_status::INVALID_QUERY;
 
+  /// `true` when `status` is a success (`CONVERGED` or `NOT_CONVERGED`).
   bool is_success() const { return MLS::is_success(status); }
 };
 

@@ -107,11 +107,16 @@ class Quadratic_function_space {
   static_assert(D == 2 || D == 3, "Quadratic_function_space: D must be 2 or 3");
 
 public:
+  /// As described by the concept `MLSFunctionSpace`: the ambient dimension, the number of
+  /// parameters of a member, their vector, and a point of the frame's tangent hyperplane.
+  /// @{
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = (D == 2) ? 1 : 3;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
   using Domain_point = internal::Vec<D - 1>;
+  /// @}
 
+  /// The name of the space, `"quadratic"`.
   static const char* name() { return "quadratic"; }
   /// The number of parameters of the member plus those of the frame (\f$D\f$).
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters + D; }

@@ -44,11 +44,11 @@ class Sample_set {
   static_assert(D == 2 || D == 3, "CGAL::MLS::Sample_set: the dimension must be 2 or 3");
 
 public:
-  using Geom_traits = GeomTraits;
-  using FT = typename GeomTraits::FT;
-  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;
-  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector;
-  using Local_point = internal::Vec<D>;
+  using Geom_traits = GeomTraits;                                        ///< the kernel
+  using FT = typename GeomTraits::FT;                                     ///< the kernel's number type
+  using Point = typename internal::Kernel_types<GeomTraits, D>::Point;   ///< `Point_2` or `Point_3`
+  using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector; ///< `Vector_2` or `Vector_3`
+  using Local_point = internal::Vec<D>; ///< a point in local (centred) coordinates: `Eigen::Matrix<double, D, 1>`
 
 private:
   using KT = internal::Kernel_types<GeomTraits, D>;
@@ -125,11 +125,14 @@ public:
   std::size_t size() const { return points_.size(); }
   /// The number of input points dropped because a coordinate was NaN or infinite.
   std::size_t number_of_ignored_points() const { return ignored_; }
+  /// Whether the input has normals (a `normal_map` was given).
   bool has_normals() const { return !normals_.empty(); }
 
   /// The translation applied to the input: local coordinates are world coordinates minus `centre()`.
   const Local_point& centre() const { return centre_; }
+  /// The local coordinates of the world point `p`.
   Local_point to_local(const Point& p) const { return KT::to_eigen(p) - centre_; }
+  /// The world point of local coordinates `p`.
   Point to_world(const Local_point& p) const { return KT::to_point(p + centre_); }
 
   /// The `i`-th point, in local (centred) coordinates.

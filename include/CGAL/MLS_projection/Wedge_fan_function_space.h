@@ -58,14 +58,19 @@ class Wedge_fan_function_space {
   static_assert(D == 2 || N >= 3, "Wedge_fan_function_space: N must be at least 3");
 
 public:
+  /// As described by the concept `MLSFunctionSpace`; `number_of_vectors` is the number of unit
+  /// vectors of the fan (2 in 2D, `N` in 3D).
+  /// @{
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_vectors = (D == 2) ? 2 : N;
   static constexpr int number_of_parameters = (D == 2) ? 2 : 2 * N;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
+  /// @}
 
   /// The tolerance on the normals of two adjacent cones under which they are one plane.
   static constexpr double coplanarity_tolerance = 1e-9;
 
+  /// The name of the space, `"wedge_fan"`.
   static const char* name() { return "wedge_fan"; }
   /// The number of parameters of the member plus those of the frame (\f$D\f$).
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters + D; }

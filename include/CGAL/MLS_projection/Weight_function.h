@@ -34,6 +34,7 @@ public:
     CGAL_precondition(h > 0 && support_factor > 0);
   }
 
+  /// The kind of weight function.
   Weight_kind kind() const { return kind_; }
   /// The bandwidth \f$h\f$.
   double bandwidth() const { return h_; }

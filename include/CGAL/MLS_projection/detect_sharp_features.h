@@ -27,7 +27,7 @@ namespace MLS {
 /// `Mesh_domain_with_polyline_features_3::add_features()` expects.
 template <class GeomTraits>
 struct Sharp_features {
-  using Point_3 = typename GeomTraits::Point_3;
+  using Point_3 = typename GeomTraits::Point_3; ///< the kernel's point type
   /// The creases, each an ordered list of points on it. A polyline ending at a corner ends at
   /// exactly the point listed in `corners` (the same coordinates in every polyline meeting
   /// there); a closed crease repeats its first point at its end.
@@ -45,7 +45,7 @@ struct Sharp_features {
     std::size_t dropped_polylines = 0; ///< polylines dropped as too short
     std::size_t relaxation_queries = 0; ///< polyline vertices projected back onto the crease
     std::size_t relaxed = 0;        ///< of which landed on a crease and were moved
-  } statistics;
+  } statistics; ///< what the detection did
 };
 
 /// \ingroup PkgMLSProjectionRef
