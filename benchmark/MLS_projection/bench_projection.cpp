@@ -7,7 +7,10 @@
 //   - a torus (R = 1, r = 0.35) of n points with isotropic Gaussian noise, for each --sizes n;
 //   - a cube [-0.5, 0.5]^3 sampled uniformly on its faces (--cube points), noiseless and with
 //     Gaussian noise of --cube-noise times the bandwidth h of the noiseless sample: the sharp
-//     edges and corners, where the wedge-fan space is exact and the quadratic ones round off.
+//     edges and corners, where the wedge-fan space is exact and the quadratic ones round off;
+//   - with --solid S, mls_mesh's built-in solid (a box with a cylindrical bore and a rounded
+//     edge: planes, cylinders, 15 sharp edges) sampled at spacing S, noiseless and noisy
+//     (--solid-noise): a CAD part with curved patches, to choose the tools' default space.
 // On each input, table 1 (every input point projected):
 //   - P_L quadratic: Levin_projection<Epick, Polynomial_function_space<3>> (default options),
 //   - P_L plane:     Levin_projection<Epick, Plane_function_space<3>>      (default options),
@@ -34,6 +37,8 @@
 #include <CGAL/MLS_projection.h>
 #include <CGAL/jet_smooth_point_set.h>
 #include <CGAL/tags.h>
+
+#include <mls_tools/builtin_solid.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -145,7 +150,7 @@ std::vector<Point> add_noise(const std::vector<Point>& points, double sigma, std
   return noisy;
 }
 
-enum class Shape { TORUS, CUBE };
+enum class Shape { TORUS, CUBE, SOLID };
 
 double distance_to_torus(const Point& p) {
   const double rho = std::hypot(p.x(), p.y());
@@ -173,14 +178,36 @@ double distance_to_cube_edge(const Point& p) {
   return best;
 }
 
+// The tools' built-in solid (a box with a bore and a rounded edge): exact distance, and the
+// distance to its true sharp edges (polylines sampled every 0.002: exact to 1e-6).
+struct Solid {
+  mls_tools::Bored_filleted_box shape;
+  std::vector<Point> edge_points;
+  Solid() {
+    for(const auto& polyline : shape.sharp_edges(0.002))
+      for(const auto& v : polyline) edge_points.emplace_back(v[0], v[1], v[2]);
+  }
+  double distance(const Point& p) const { return std::abs(shape.signed_distance({p.x(), p.y(), p.z()})); }
+  double edge_distance(const Point& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for(const Point& e : edge_points) best = (std::min)(best, CGAL::squared_distance(p, e));
+    return std::sqrt(best);
+  }
+};
+
 struct Input {
   std::string name;
   Shape shape = Shape::TORUS;
   std::vector<Point> points;
   double noise = 0;
-  double distance(const Point& p) const { return shape == Shape::TORUS ? distance_to_torus(p) : distance_to_cube(p); }
-  // Queries "near a feature" (cube: within 2h of an edge) get their own accuracy column.
-  bool near_feature(const Point& p, double h) const { return shape == Shape::CUBE && distance_to_cube_edge(p) < 2 * h; }
+  std::shared_ptr<const Solid> solid; // Shape::SOLID
+  double distance(const Point& p) const {
+    return shape == Shape::TORUS ? distance_to_torus(p) : shape == Shape::CUBE ? distance_to_cube(p) : solid->distance(p);
+  }
+  // Queries "near a feature" (within 2h of a sharp edge) get their own accuracy column.
+  bool near_feature(const Point& p, double h) const {
+    return (shape == Shape::CUBE && distance_to_cube_edge(p) < 2 * h) || (shape == Shape::SOLID && solid->edge_distance(p) < 2 * h);
+  }
 };
 
 struct Accuracy {
@@ -441,6 +468,9 @@ const std::vector<std::string> all_operators = {"single", "enriched", "unified-q
     << "  --sizes a,b,...     torus sizes (default 50000; 'none': no torus)\n"
     << "  --cube N            points of the sampled cube (default 20000; 0: no cube)\n"
     << "  --cube-noise F      noise of the noisy cube, in units of its h (default 0.02; < 0: no noisy cube)\n"
+    << "  --solid S           mls_mesh's built-in solid (box, bore, rounded edge) sampled at spacing S\n"
+    << "                      (default 0: none; 0.03 gives about 11800 points), noiseless and noisy\n"
+    << "  --solid-noise F     noise of the noisy solid, in units of its h (default 0.02; < 0: none)\n"
     << "  --subset N          queries of the closest-point operators per input (default 300; 0: none)\n"
     << "  --operators a,b,... closest-point operators among single, enriched, unified-quadratic,\n"
     << "                      unified-wedge, mixed (default: all)\n"
@@ -486,6 +516,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> sizes = {50000};
   std::size_t cube_size = 20000, subset_size = 300;
   double cube_noise = 0.02; // in units of h
+  double solid_spacing = 0, solid_noise = 0.02; // --solid: the built-in solid's sample spacing (0: none)
   std::vector<std::string> operators = all_operators;
   int threads = 0; // 0: all cores
   unsigned int jet_k = 18;
@@ -502,6 +533,8 @@ int main(int argc, char** argv) {
     if(arg == "--sizes") sizes = parse_sizes(value(), argv[0]);
     else if(arg == "--cube") cube_size = parse_count(value(), argv[0], arg);
     else if(arg == "--cube-noise") cube_noise = std::atof(value().c_str());
+    else if(arg == "--solid") solid_spacing = std::atof(value().c_str());
+    else if(arg == "--solid-noise") solid_noise = std::atof(value().c_str());
     else if(arg == "--subset") subset_size = parse_count(value(), argv[0], arg);
     else if(arg == "--operators") {
       operators = split(value());
@@ -561,6 +594,26 @@ int main(int argc, char** argv) {
     }
   }
 
+  double solid_h = 0;
+  if(solid_spacing > 0) {
+    Input solid;
+    solid.name = "solid";
+    solid.shape = Shape::SOLID;
+    solid.solid = std::make_shared<const Solid>();
+    for(const auto& p : mls_tools::builtin_solid_points(solid_spacing).points) solid.points.emplace_back(p[0], p[1], p[2]);
+    solid_h = CGAL::MLS::Levin_projection<Kernel>(solid.points).bandwidth();
+    if(solid_noise >= 0) {
+      Input noisy = solid;
+      noisy.noise = solid_noise * solid_h;
+      noisy.name = "solid+noise";
+      noisy.points = add_noise(solid.points, noisy.noise, seed + 2);
+      inputs.push_back(std::move(solid));
+      inputs.push_back(std::move(noisy));
+    } else {
+      inputs.push_back(std::move(solid));
+    }
+  }
+
   std::cout << "MLS_projection benchmark: torus R=" << major_radius << " r=" << minor_radius
             << ", isotropic Gaussian noise sigma=" << noise << "; cube [-0.5,0.5]^3, " << cube_size
             << " points uniform on the faces, noiseless (h=" << cube_h << ") and noisy (sigma=" << cube_noise
@@ -575,7 +628,8 @@ int main(int argc, char** argv) {
   std::vector<Row> full_rows, subset_rows;
   for(const Input& input : inputs) {
     const std::size_t n = input.points.size();
-    const double h = input.shape == Shape::CUBE ? cube_h : 0; // "edge mean" uses the cube's h
+    // "edge mean" uses the noiseless sample's h
+    const double h = input.shape == Shape::CUBE ? cube_h : input.shape == Shape::SOLID ? solid_h : 0;
     const std::string tag = input.name + " n=" + std::to_string(n);
     const std::vector<Point> all = input.points;
     Row sample;
