@@ -503,14 +503,9 @@ protected:
     // An exact fit stops at once. On noisy data, the energy has long, nearly flat valleys
     // (moving the origin tangentially while tilting the frame and bending the function changes
     // the surface near C(r) very little), along which the steps would crawl for hundreds of
-    // iterations, gaining a few 1e-5 of the energy: stop when 10 evaluations gain less than 1e-4
-    // of it. Measured on the benchmark's noisy torus and noisy cube (wedge fan): the final run
-    // took about 270 evaluations per query with 1e-6, 76 with 1e-4, 13 with 1e-3, for the same
-    // accuracy; but 1e-3 stops too far from the bottom of the valley for the projection property
-    // (|P(P(r)) - P(r)| reached 5.2e-4 h on a noisy circle, against 2.2e-4 h with 1e-6).
-    // Exact fits stop on `absolute_value` first.
+    // iterations, gaining a few 1e-5 of the energy: stop when 10 evaluations gain less than 1e-6.
     settings.absolute_value = exact_value;
-    settings.stall_tolerance = 1e-4;
+    settings.stall_tolerance = 1e-6;
     settings.max_evaluations =
       max_evaluations > 0 ? max_evaluations : this->options_.max_evaluations * (n + 1) / (D + 1);
     internal::Minimizer_report report;
@@ -585,9 +580,7 @@ protected:
   }
 
   // The budget of function evaluations of each start before the selection.
-  // 15: the starts' energies are told apart within it on the benchmark's inputs (30 cost twice
-  // as much for the same selections' accuracy).
-  static constexpr int race_evaluations = 15;
+  static constexpr int race_evaluations = 30;
   // A sum of squares (units of h^2) below which a fit is exact: every residual below 1e-13 h.
   static constexpr double exact_value = 1e-26;
 
