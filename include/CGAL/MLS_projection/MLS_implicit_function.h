@@ -190,8 +190,8 @@ struct Seed_projection<Projection, false> {
 /// projected by Levin's operator \f$\mathcal{P}_L\f$ with a quadratic (some 0.3 ms, against 10
 /// to 200 ms for the closest-point operators), and its fit is kept where it explains the data:
 /// where its energy (weighted mean squared residual) is at most
-/// \f$\max\big((\rho h)^2, \kappa^2 E_{25}\big)\f$, with \f$\rho\f$ = `screening_residual`,
-/// \f$\kappa\f$ = `screening_noise_factor` and \f$E_{25}\f$ the first quartile of the seeds'
+/// \f$\max\big((\rho h)^2, \kappa^2 E_{5}\big)\f$, with \f$\rho\f$ = `screening_residual`,
+/// \f$\kappa\f$ = `screening_noise_factor` and \f$E_{5}\f$ the 5th percentile of the seeds'
 /// energies (the level of the noise on the smooth parts). The other seeds (near creases and
 /// corners, where a quadratic cannot follow the data) are projected by the operator; with
 /// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
@@ -613,14 +613,16 @@ private:
       std::vector<double> energies;
       for(const Result& r : results)
         if(r.is_success() && std::isfinite(r.energy)) energies.push_back(r.energy);
-      double quartile = 0;
+      // the noise level of the smooth parts: a low percentile (on a small box, nearly every seed
+      // is near a crease, so the median or even the first quartile is a crease's energy)
+      double noise = 0;
       if(!energies.empty()) {
-        auto q = energies.begin() + std::ptrdiff_t(energies.size() / 4);
+        auto q = energies.begin() + std::ptrdiff_t(energies.size() / 20);
         std::nth_element(energies.begin(), q, energies.end());
-        quartile = *q;
+        noise = *q;
       }
       const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
-      d.threshold = (std::max)(rho * rho, kappa * kappa * quartile);
+      d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
       d.seed_projection.emplace(d.projection, d.threshold);
       std::vector<std::size_t> others;
       std::vector<Point_3> other_queries;

@@ -215,13 +215,24 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     if(!report("features", 0.5, 0.6, 1.)) return fail("cancelled");
     // 4. meshing
     internal::Mesher_input<K> in;
-    in.function = [function](const Point_3& p) { return CGAL::to_double(function(p)); };
     in.bounding_sphere = function.bounding_sphere();
+    // The function, made positive outside the bounding sphere: max(f, |x - c| - R). Mesh_3 also
+    // evaluates points far outside it (the circumcentres of the initial triangulation's cells),
+    // where the far value, signed by the nearest seed's normal, may change sign wherever two
+    // seeds with different normals are about equally far (e.g. on the axis of a bore, beyond the
+    // solid), which would grow spurious surface there.
+    const Point_3 centre = in.bounding_sphere.center();
+    const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
+    in.function = [function, centre, radius](const Point_3& p) {
+      const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+      return (std::max)(CGAL::to_double(function(p)), outside);
+    };
     in.inner_point = function.get_inner_point();
-    if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
-    if(!internal::is_positive_on_sphere(in.function, in.bounding_sphere.center(),
-                                        std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()))))
+    // the sphere check on the function itself (the clamped one is 0 on the sphere)
+    if(!internal::is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
+                                        radius))
       return fail("the surface is not closed (the points bound no volume: coplanar points, an open surface)");
+    if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
     const auto& seeds = function.projected_seeds();
     const std::size_t stride = (std::max<std::size_t>)(1, seeds.size() / 128);
     for(std::size_t i = 0; i < seeds.size(); i += stride) {
