@@ -78,6 +78,8 @@ struct Settings {
   std::optional<Options::Space> space; // unset: mixed, quadratic with levin
   Options::Mesher mesher = Options::Mesher::MESH_3;
   bool features = true; // auto
+  bool screening = true;
+  double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
   int threads = 0; // 0: all
   bool quiet = false;
@@ -106,6 +108,14 @@ mls_tools::Argument_parser make_parser(Settings& s) {
   parser.add("--features", "auto|off", "protect sharp features (default: auto, see below)", [&s](const std::string& v) {
     s.features = mls_tools::parse_choice<bool>("--features", v, {{"auto", true}, {"off", false}});
   });
+  parser.add("--screening", "on|off",
+             "with wedge or mixed: project the smooth parts' seeds with levin, the others with the operator (default: on)",
+             [&s](const std::string& v) {
+               s.screening = mls_tools::parse_choice<bool>("--screening", v, {{"on", true}, {"off", false}});
+             });
+  parser.add("--screening-residual", "R",
+             "the screening's residual threshold, > 0, in units of h (default: 0.01)",
+             [&s](const std::string& v) { s.screening_residual = mls_tools::parse_positive_double("--screening-residual", v); });
   parser.add("--size", "S", "facet size bound, > 0, in input units (default: 2 x the average spacing)",
              [&s](const std::string& v) { s.size = mls_tools::parse_positive_double("--size", v); });
   parser.add("--distance", "D", "facet distance bound, > 0, in input units (default: 0.25 x the average spacing)",
@@ -122,7 +132,8 @@ void print_help(const mls_tools::Argument_parser& parser) {
   std::cout
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
-       "                [--size S] [--distance D] [--h H] [--threads N] [--quiet]\n"
+       "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
+       "                [--h H] [--threads N] [--quiet]\n"
        "\n"
        "Meshes the moving-least-squares (MLS) surface of a 3D point set into a closed, manifold\n"
        "triangle mesh (OFF), with CGAL's Mesh_3 or Surface_mesher.\n"
@@ -140,6 +151,11 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "found by the projection are chained into polylines that Mesh_3 protects, so the mesh has\n"
        "edges along them and vertices at the corners. Otherwise (levin, plane, quadratic,\n"
        "surface_mesher) no feature is protected. --features off never protects any.\n"
+       "\n"
+       "Screening (--screening on): with wedge or mixed, the seeds of the implicit function (and the\n"
+       "feature detection's points) are projected with levin first, and only those whose quadratic\n"
+       "fit leaves a residual above R h (--screening-residual, default 0.01) go to the unified\n"
+       "operator: the creases and corners. --screening off projects every seed with the operator.\n"
        "\n"
        "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6, .ply and .off\n"
        "give their vertices (normals when present). Without normals, normals are estimated and\n"
@@ -246,6 +262,8 @@ int run(int argc, char** argv) {
   options.facet_size = s.size;
   options.facet_distance = s.distance;
   options.bandwidth = s.bandwidth;
+  options.implicit_function.levin_screening = s.screening;
+  if(s.screening_residual > 0) options.implicit_function.screening_residual = s.screening_residual;
 
   // Check that the output can be written before doing any work.
   mls_tools::Atomic_output_file output(s.output);
@@ -290,11 +308,13 @@ int run(int argc, char** argv) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fprintf(stderr,
-               "%s: %zu points, %s/%s, %s, %.2f s, %zu vertices, %zu facets, %zu feature polylines, %zu corners, %s, %s, "
+               "%s: %zu points, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator, features "
+               "%.1f s: %zu queries, meshing %.1f s), %zu vertices, %zu facets, %zu feature polylines, %zu corners, %s, %s, "
                "output %s\n",
                tool_name, input.size(), name_of(s.op, operator_choices).c_str(),
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
-               std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
+               report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.failed_seeds,
+               report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
                closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str());
   return 0;
 }

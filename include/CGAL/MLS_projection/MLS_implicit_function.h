@@ -13,6 +13,7 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/project_points.h>
 
@@ -26,6 +27,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -148,6 +150,19 @@ inline double smoothstep(double s) {
   return s * s * (3. - 2. * s);
 }
 
+/// The operator that projects the seeds of `MLS_implicit_function<Projection>`: screened by P_L
+/// for the operators that find creases, the operator itself for the others.
+template <class Projection, bool = finds_creases<Projection>::value>
+struct Seed_projection {
+  using type = Levin_screened_projection<Projection>;
+  static constexpr bool screens = true;
+};
+template <class Projection>
+struct Seed_projection<Projection, false> {
+  using type = Projection;
+  static constexpr bool screens = false;
+};
+
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionRef
@@ -169,6 +184,19 @@ inline double smoothstep(double s) {
 /// once; each successful result keeps its local fit (frame and coefficients) and its oriented
 /// normal. The oriented results are available as `projected_seeds()`, e.g. for the detection of
 /// sharp features (project once, use twice).
+///
+/// <b>Screening by P_L.</b> With an operator that finds creases (`Wedge_fan_function_space`
+/// alone or in `Mixed_projection`) and `levin_screening` set (default), every seed is first
+/// projected by Levin's operator \f$\mathcal{P}_L\f$ with a quadratic (some 0.3 ms, against 10
+/// to 200 ms for the closest-point operators), and its fit is kept where it explains the data:
+/// where its energy (weighted mean squared residual) is at most
+/// \f$\max\big((\rho h)^2, \kappa^2 E_{5}\big)\f$, with \f$\rho\f$ = `screening_residual`,
+/// \f$\kappa\f$ = `screening_noise_factor` and \f$E_{5}\f$ the 5th percentile of the seeds'
+/// energies (the level of the noise on the smooth parts). The other seeds (near creases and
+/// corners, where a quadratic cannot follow the data) are projected by the operator; with
+/// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
+/// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
+/// screened operator (`internal::Levin_screened_projection`), also used for the feature detection.
 ///
 /// <b>Evaluation, `LOCAL_FITS` (default).</b> With \f$s_1, \dots, s_{k+1}\f$ the \f$k+1\f$ nearest
 /// seeds of \f$x\f$ (\f$k\f$ = `blend_neighbors`) and \f$R\f$ the distance to the last,
@@ -196,6 +224,7 @@ template <class Projection>
 class MLS_implicit_function {
   static_assert(Projection::dimension == 3, "MLS_implicit_function: a 3D projection operator");
   using Evaluator = internal::Local_fit_evaluator<Projection>;
+  static constexpr bool screens = internal::Seed_projection<Projection>::screens;
   using V = internal::Vec<3>;
   using M = internal::Mat<3>;
 
@@ -212,6 +241,10 @@ public:
   using Samples = typename Projection::Samples;
   using Result = Projection_result<Geom_traits, 3>;
   /// @}
+  /// The operator that projects the seeds: `internal::Levin_screened_projection<Projection>` for
+  /// the operators that find creases (the screening can be off: see `Implicit_function_options`),
+  /// `Projection` for the others.
+  using Seed_projection_type = typename internal::Seed_projection<Projection>::type;
 
   /// The state after construction.
   enum class Status {
@@ -312,6 +345,14 @@ public:
 
   /// The projection operator.
   const Projection& projection() const { return data_->projection; }
+  /// The operator that projected the seeds (see "Screening by P_L"); only on a function whose
+  /// seeds were projected (`status()` neither `NO_BANDWIDTH` nor `TOO_FEW_SEEDS` before them).
+  const Seed_projection_type& seed_projection() const { return *data_->seed_projection; }
+  bool has_seed_projection() const { return bool(data_->seed_projection); }
+  /// The number of seeds projected by the closest-point operator (all seeds without screening).
+  std::size_t number_of_operator_seeds() const { return data_->operator_seeds; }
+  /// The energy threshold of the screening (absolute squared length); negative without screening.
+  double screening_threshold() const { return data_->threshold; }
   /// The options given at construction.
   const Implicit_function_options& options() const { return data_->options; }
   /// The bandwidth \f$h\f$ of the operator.
@@ -351,16 +392,28 @@ private:
     std::vector<Fit> fits;                // indexed like `seeds`
     std::vector<Result> projected;
     std::size_t failed = 0;
+    std::optional<Seed_projection_type> seed_projection;
+    std::size_t operator_seeds = 0;
+    double threshold = -1;
     internal::Oriented_normals_report normals_report;
     Sphere_3 sphere;
     Point_3 inner_point;
     Status status = Status::VALID;
   };
 
+  // A fit of P_L's quadratic among the fits of a screened operator.
+  static bool is_levin_fit(int count) { return screens && count == internal::levin_quadratic_parameters; }
+  static bool accepts(int count) { return is_levin_fit(count) || Evaluator::accepts(count); }
+
+  static Closest_point<3> fit_closest_point(const Data& d, const Fit& f, const V& y) {
+    if(is_levin_fit(f.count)) return internal::polynomial_graph_closest_point(f.c.data(), y);
+    return d.evaluator.closest_point(f.c.data(), f.count, y);
+  }
+
   static double fit_distance(const Data& d, const Fit& f, const V& x) {
     if(f.count == 0) return f.sign * f.axes.col(2).dot(x - f.origin); // a plane (e.g. Levin's fall-back)
     const V y = f.axes.transpose() * (x - f.origin) / f.unit;
-    return f.sign * f.unit * d.evaluator.closest_point(f.c.data(), f.count, y).signed_distance;
+    return f.sign * f.unit * fit_closest_point(d, f, y).signed_distance;
   }
 
   double far_value(const V& x) const {
@@ -439,16 +492,9 @@ private:
     std::vector<Point_3> queries(seed_index.size());
     for(std::size_t j = 0; j < seed_index.size(); ++j) queries[j] = samples.to_world(samples.local_point(seed_index[j]));
     std::vector<Result> results;
-    results.reserve(queries.size());
-    const std::size_t chunk = 128;
-    for(std::size_t b = 0; b < queries.size(); b += chunk) {
-      const std::size_t e = (std::min)(queries.size(), b + chunk);
-      std::vector<Point_3> part(queries.begin() + b, queries.begin() + e);
-      project_points<ConcurrencyTag>(d.projection, part, std::back_inserter(results));
-      if(callback && !callback(start + (1. - start) * 0.95 * double(e) / double(queries.size()))) {
-        d.status = Status::CANCELLED;
-        return;
-      }
+    if(!project_seeds(d, ConcurrencyTag(), queries, results, callback, start)) {
+      d.status = Status::CANCELLED;
+      return;
     }
 
     // 4. the local fits, oriented
@@ -459,7 +505,7 @@ private:
       Fit f;
       f.count = int(r.coefficients.size());
       // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
-      if(!r.is_success() || !(f.count == 0 || Evaluator::accepts(f.count)) || f.count > internal::max_local_fit_parameters) {
+      if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters) {
         ++d.failed;
         continue;
       }
@@ -468,7 +514,7 @@ private:
       f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
       f.axes.col(2) = KT::to_eigen(r.frame.normal);
       f.origin = samples.to_local(r.frame.origin);
-      f.unit = Evaluator::unit(d.h);
+      f.unit = is_levin_fit(f.count) ? 1. : Evaluator::unit(d.h);
       std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
       // the "up" normal of the fit at the projected point, and its orientation
       Closest_point<3> cp;
@@ -476,7 +522,7 @@ private:
         cp.normal = V(0, 0, 1);
         cp.signed_distance = f.axes.col(2).dot(P - f.origin) / f.unit;
       } else {
-        cp = d.evaluator.closest_point(f.c.data(), f.count, V(f.axes.transpose() * (P - f.origin) / f.unit));
+        cp = fit_closest_point(d, f, V(f.axes.transpose() * (P - f.origin) / f.unit));
       }
       const V up = f.axes * cp.normal;
       V rn = KT::to_eigen(r.normal);
@@ -536,6 +582,67 @@ private:
       }
     }
     if(callback && !callback(1.)) d.status = Status::CANCELLED;
+  }
+
+  // Projects `queries` with the seed projection (built here: its screening threshold comes from
+  // the seeds), in chunks of 128 so that the callback (fractions from `start` to 0.95) is called
+  // often. False when cancelled.
+  template <class ConcurrencyTag>
+  static bool project_seeds(Data& d, ConcurrencyTag, const std::vector<Point_3>& queries, std::vector<Result>& results,
+                            const std::function<bool(double)>& callback, double start) {
+    const std::size_t chunk = 128;
+    const auto project_all = [&](const auto& projection, const std::vector<Point_3>& q, std::vector<Result>& out,
+                                 double from, double to) {
+      out.reserve(out.size() + q.size());
+      for(std::size_t b = 0; b < q.size(); b += chunk) {
+        const std::size_t e = (std::min)(q.size(), b + chunk);
+        std::vector<Point_3> part(q.begin() + b, q.begin() + e);
+        project_points<ConcurrencyTag>(projection, part, std::back_inserter(out));
+        if(callback && !callback(start + (1. - start) * (from + (to - from) * double(e) / double(q.size()))))
+          return false;
+      }
+      return true;
+    };
+    if constexpr(!screens) {
+      d.seed_projection.emplace(d.projection);
+      d.operator_seeds = queries.size();
+      return project_all(d.projection, queries, results, 0., 0.95);
+    } else {
+      if(!d.options.levin_screening) {
+        d.seed_projection.emplace(d.projection, -1.);
+        d.operator_seeds = queries.size();
+        return project_all(*d.seed_projection, queries, results, 0., 0.95);
+      }
+      // P_L on every seed, the threshold from their energies, the operator on the others
+      const Seed_projection_type probe(d.projection, 0.);
+      if(!project_all(probe.levin(), queries, results, 0., 0.05)) return false;
+      std::vector<double> energies;
+      for(const Result& r : results)
+        if(r.is_success() && std::isfinite(r.energy)) energies.push_back(r.energy);
+      // the noise level of the smooth parts: a low percentile (on a small box, nearly every seed
+      // is near a crease, so the median or even the first quartile is a crease's energy)
+      double noise = 0;
+      if(!energies.empty()) {
+        auto q = energies.begin() + std::ptrdiff_t(energies.size() / 20);
+        std::nth_element(energies.begin(), q, energies.end());
+        noise = *q;
+      }
+      const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
+      d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
+      d.seed_projection.emplace(d.projection, d.threshold);
+      std::vector<std::size_t> others;
+      std::vector<Point_3> other_queries;
+      for(std::size_t j = 0; j < results.size(); ++j)
+        if(!d.seed_projection->keeps(results[j])) {
+          others.push_back(j);
+          other_queries.push_back(queries[j]);
+        }
+      d.operator_seeds = others.size();
+      std::vector<Result> projected;
+      if(!project_all(*d.seed_projection, other_queries, projected, 0.05, 0.95)) return false;
+      for(std::size_t k = 0; k < others.size() && k < projected.size(); ++k) results[others[k]] = std::move(projected[k]);
+      return true;
+    }
   }
 
   // A non-owning view used during construction (data_ does not exist yet).

@@ -16,6 +16,7 @@
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/detect_sharp_features.h>
+#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 
@@ -39,29 +40,44 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
-// Whether a projection operator finds creases (its results' `is_on_feature`): the wedge fan,
-// alone or in the mixed space.
-template <class Projection> struct finds_creases : std::false_type {};
-template <class K, int N, Operator_kind kind>
-struct finds_creases<Closest_point_projection<K, Wedge_fan_function_space<3, N>, kind>> : std::true_type {};
-template <class K, Operator_kind kind, class Smooth, class Sharp>
-struct finds_creases<Mixed_projection<K, 3, kind, Smooth, Sharp>> : std::true_type {};
-
 /// The sharp-feature polylines (and the number of corners) to protect when meshing `function`:
-/// `detect_sharp_features()` (default `Feature_options`) on the seeds the function projected
-/// (project once, use twice), for the operators that find creases; none for the others.
+/// `detect_sharp_features()` (default `Feature_options`) with the operator that projected the
+/// seeds (screened by P_L, see `MLS_implicit_function`) on the seeds' results (project once, use
+/// twice), for the operators that find creases; none for the others. `queries`: the helper and
+/// relaxation points projected.
 template <class ConcurrencyTag, class ImplicitFunction>
 std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(const ImplicitFunction& function,
-                                                                               std::size_t& number_of_corners) {
+                                                                               std::size_t& number_of_corners,
+                                                                               std::size_t& queries) {
   number_of_corners = 0;
+  queries = 0;
   using Projection = typename ImplicitFunction::Projection_type;
   if constexpr(finds_creases<Projection>::value) {
-    auto features = detect_sharp_features<ConcurrencyTag>(function.projection(), function.projected_seeds());
+    if(!function.has_seed_projection()) return {};
+    auto features = detect_sharp_features<ConcurrencyTag>(function.seed_projection(), function.projected_seeds());
     number_of_corners = features.corners.size();
+    queries = features.statistics.helper_queries + features.statistics.relaxation_queries;
     return std::move(features.polylines);
   }
   (void)function;
   return {};
+}
+
+/// Whether `f` is positive at 256 points spread evenly over the sphere (Fibonacci lattice):
+/// the surface \f$f = 0\f$ is then closed inside it. It is not when the data bound no volume
+/// (coplanar points, an open scan): the region \f$f < 0\f$ then reaches the sphere, and Mesh_3
+/// would refine the intersection of the surface with the sphere without end.
+template <class Point_3, class Function>
+bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radius) {
+  const int n = 256;
+  const double golden = M_PI * (3. - std::sqrt(5.));
+  for(int i = 0; i < n; ++i) {
+    const double z = 1. - (2. * i + 1.) / n, r = std::sqrt((std::max)(0., 1. - z * z)), t = golden * i;
+    const Point_3 p(CGAL::to_double(centre.x()) + radius * r * std::cos(t), CGAL::to_double(centre.y()) + radius * r * std::sin(t),
+                    CGAL::to_double(centre.z()) + radius * z);
+    if(!(f(p) > 0)) return false;
+  }
+  return true;
 }
 
 } // namespace internal
@@ -181,6 +197,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.seconds_seeds = since(t_seeds);
     out.bandwidth = function.bandwidth();
     out.seeds = function.number_of_seeds();
+    out.operator_seeds = function.number_of_operator_seeds();
     out.failed_seeds = function.number_of_failed_seeds();
     if(function.status() == Function::Status::CANCELLED) return fail("cancelled");
     if(!function.is_valid()) return fail("no implicit function (too few seeds could be projected: degenerate data)");
@@ -191,16 +208,30 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     std::size_t corners = 0;
     std::vector<std::vector<Point_3>> polylines;
     if(options.features && options.mesher == Meshing_options::Mesher::MESH_3)
-      polylines = internal::feature_polylines<ConcurrencyTag>(function, corners);
+      polylines = internal::feature_polylines<ConcurrencyTag>(function, corners, out.feature_queries);
     out.feature_polylines = polylines.size();
     out.corners = corners;
     out.seconds_features = since(t_features);
     if(!report("features", 0.5, 0.6, 1.)) return fail("cancelled");
     // 4. meshing
     internal::Mesher_input<K> in;
-    in.function = [function](const Point_3& p) { return CGAL::to_double(function(p)); };
     in.bounding_sphere = function.bounding_sphere();
+    // The function, made positive outside the bounding sphere: max(f, |x - c| - R). Mesh_3 also
+    // evaluates points far outside it (the circumcentres of the initial triangulation's cells),
+    // where the far value, signed by the nearest seed's normal, may change sign wherever two
+    // seeds with different normals are about equally far (e.g. on the axis of a bore, beyond the
+    // solid), which would grow spurious surface there.
+    const Point_3 centre = in.bounding_sphere.center();
+    const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
+    in.function = [function, centre, radius](const Point_3& p) {
+      const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+      return (std::max)(CGAL::to_double(function(p)), outside);
+    };
     in.inner_point = function.get_inner_point();
+    // the sphere check on the function itself (the clamped one is 0 on the sphere)
+    if(!internal::is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
+                                        radius))
+      return fail("the surface is not closed (the points bound no volume: coplanar points, an open surface)");
     if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
     const auto& seeds = function.projected_seeds();
     const std::size_t stride = (std::max<std::size_t>)(1, seeds.size() / 128);
