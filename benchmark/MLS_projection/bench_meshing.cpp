@@ -9,14 +9,18 @@
 //   - "solid": mls_mesh's built-in solid (a box with a cylindrical bore and a rounded edge:
 //     15 sharp edges, 6 corners), noiseless;
 //   - "solid+noise": the same with isotropic Gaussian noise of --noise (default 0.1 x spacing);
-//   - "sphere": a sphere of radius 0.6 (no sharp edge).
+//   - "sphere": a sphere of radius 0.6 (no sharp edge);
+//   - "fandisk", "fandisk+noise": a fandisk-like CAD block generated here (Fandisk_like_block below:
+//     an extruded polygon with a slanted face, a concave step and a chamfer; 24 sharp edges at
+//     90 to 149 degrees, convex and concave), without and with the same noise.
 // Methods:
 //   - MLS: CGAL::MLS::mls_surface_reconstruction<Parallel_if_available_tag> with the options of
 //     mls_mesh's defaults (unified operator, mixed space, Mesh_3, features on, facet size 2 and
 //     distance 0.25 times the average spacing), or --operator/--space;
 //   - Poisson: CGAL::poisson_surface_reconstruction_delaunay with the average spacing
-//     (compute_average_spacing, 6 neighbours, timed with it) and its default criteria (angle 20,
-//     radius 30, distance 0.375 spacings), as in CGAL's Poisson example.
+//     (compute_average_spacing, 6 neighbours, timed with it), twice: with its default criteria
+//     (angle 20, radius 30, distance 0.375 spacings), as in CGAL's Poisson example, and with the
+//     criteria of the MLS row (angle 25, radius 2, distance 0.25 spacings: the same resolution).
 // Figures, against the exact surface (exact closest points, see builtin_solid.h):
 //   - seconds: wall time of the call (the points and exact normals are given to both methods);
 //   - vertices: maximum and RMS distance of the mesh's vertices to the surface;
@@ -27,10 +31,10 @@
 //   - normal error: mean angle (degrees, weighted by facet area) between each facet's normal and
 //     the true normal at the point of the surface closest to its centroid;
 //   - edge distance: mean distance to the mesh from points 0.005 apart along the true sharp edges.
-//   - cpu s: the process's CPU time (user + system, all threads, getrusage) over the call: on a
-//     shared machine the more trustworthy time.
 // All lengths are in the unit of the shape (the solid is 2 x 1.2 x 0.8, the sphere's radius 0.6).
 //
+//   - cpu s: the process's CPU time (user + system, all threads, getrusage) over the call: on a
+//     shared machine the more trustworthy time.
 // Sanity checks printed on stderr (they should read about 0, or agree): the input points' distance
 // to the surface (0 without noise, about the noise otherwise), the true edges' distance to the
 // surface (0), the dense sample's (0), each mesh's volume against the solid's (Monte Carlo), and,
@@ -39,6 +43,8 @@
 // Usage: bench_meshing [--spacing S | --points N] [--noise SIGMA] [--shapes solid,solid+noise,sphere]
 //                      [--methods mls,poisson] [--operator levin|unified]
 //                      [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]
+//                      [--poisson-criteria default|matched|both]
+// Shapes: solid, solid+noise, sphere (the default list), fandisk, fandisk+noise.
 // --points N samples each shape at the spacing that gives about N points (sqrt(area / N)).
 
 #include <CGAL/MLS_projection/Meshing_options.h>
@@ -67,12 +73,14 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -180,12 +188,138 @@ Figures measure(const Mesh& mesh, const mls_tools::Analytic_solid& solid, double
   return f;
 }
 
+
+/// A fandisk-like CAD block, generated here (CGAL's fandisk.off itself is not used): the polygon
+/// P0..P7 of the (x, z) plane below extruded along y over [-0.5, 0.5]. Its profile has a slanted
+/// face (dihedral angles 104 and 149 degrees with its neighbours), a concave step (270 degrees
+/// inside: a concave 90-degree edge) and a 45-degree chamfer (two 135-degree edges); the caps
+/// meet the sides at 90 degrees. Sharp: the 8 extrusion edges and the 16 cap edges; 16 corners.
+/// Every face is planar; the caps are split into two convex pieces along z = 0.1 (not an edge).
+/// Closest points are exact: the nearest of the faces' closest points, each the projection on the
+/// face's plane when it falls inside the (convex) face, else the nearest point of its boundary.
+class Fandisk_like_block : public mls_tools::Analytic_solid {
+public:
+  using Vec3 = mls_tools::Vec3;
+  using Vec2 = std::array<double, 2>; // (x, z)
+
+  Fandisk_like_block() {
+    const std::vector<Vec2> profile = {{-1., -0.4}, {1., -0.4}, {1., -0.2}, {0.5, 0.1},
+                                       {0.2, 0.1},  {0.2, 0.2}, {0., 0.4},  {-1., 0.4}};
+    pieces_ = {{{-1., -0.4}, {1., -0.4}, {1., -0.2}, {0.5, 0.1}, {0.2, 0.1}, {-1., 0.1}},
+               {{-1., 0.1}, {0.2, 0.1}, {0.2, 0.2}, {0., 0.4}, {-1., 0.4}}};
+    const auto at = [](const Vec2& q, double y) { return Vec3{q[0], y, q[1]}; };
+    // caps: y = +-b, each convex piece a face (outward normal +-y)
+    for(double sy : {-1., 1.})
+      for(const auto& piece : pieces_) {
+        std::vector<Vec3> face;
+        for(const Vec2& q : piece) face.push_back(at(q, sy * b));
+        // the profile is counterclockwise in (x, z), i.e. seen from -y: reversed on the cap y = +b
+        if(sy > 0) std::reverse(face.begin(), face.end()); // counterclockwise seen from outside
+        add_convex_face(face);
+      }
+    // sides: the profile's edges extruded (the profile is counterclockwise in (x, z))
+    const std::size_t n = profile.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Vec2 &p = profile[i], &q = profile[(i + 1) % n];
+      add_convex_face({at(p, -b), at(p, b), at(q, b), at(q, -b)}); // counterclockwise seen from outside
+      add_segment(at(p, -b), at(p, b));
+      for(double sy : {-1., 1.}) add_segment(at(p, sy * b), at(q, sy * b));
+      for(double sy : {-1., 1.}) corners_.push_back(at(p, sy * b));
+    }
+  }
+  std::string name() const override { return "fandisk-like block"; }
+  bool contains(const Vec3& p) const override {
+    if(std::abs(p[1]) >= b) return false;
+    for(const auto& piece : pieces_) {
+      bool inside = true;
+      for(std::size_t i = 0; i < piece.size() && inside; ++i) {
+        const Vec2 &u = piece[i], &v = piece[(i + 1) % piece.size()];
+        inside = (v[0] - u[0]) * (p[2] - u[1]) - (v[1] - u[1]) * (p[0] - u[0]) > 0;
+      }
+      if(inside) return true;
+    }
+    return false;
+  }
+  std::array<Vec3, 2> bounding_box() const override { return {Vec3{-1., -b, -0.4}, Vec3{1., b, 0.4}}; }
+
+private:
+  static constexpr double b = 0.5;
+  std::vector<std::vector<Vec2>> pieces_;
+
+  static Vec3 cross(const Vec3& u, const Vec3& v) {
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  }
+  /// A planar convex polygon, vertices counterclockwise seen from outside.
+  void add_convex_face(const std::vector<Vec3>& v) {
+    using mls_tools::dot;
+    using mls_tools::norm;
+    using mls_tools::operator-;
+    using mls_tools::operator+;
+    using mls_tools::operator*;
+    Vec3 normal{0., 0., 0.};
+    for(std::size_t i = 1; i + 1 < v.size(); ++i) {
+      const Vec3 c = cross(v[i] - v[0], v[i + 1] - v[0]);
+      normal = normal + c;
+    }
+    const double area = norm(normal) / 2;
+    normal = (1. / norm(normal)) * normal;
+    const auto inside = [v, normal](const Vec3& q) {
+      for(std::size_t i = 0; i < v.size(); ++i)
+        if(dot(cross(v[(i + 1) % v.size()] - v[i], q - v[i]), normal) < 0) return false;
+      return true;
+    };
+    // sampling: uniform in the bounding box of the face's vertices, projected on the face's
+    // plane along its largest normal coordinate (uniform by area too), rejected outside
+    std::size_t k = 0;
+    for(std::size_t c = 1; c < 3; ++c)
+      if(std::abs(normal[c]) > std::abs(normal[k])) k = c;
+    const std::size_t i0 = (k + 1) % 3, i1 = (k + 2) % 3;
+    Vec3 lo = v[0], hi = v[0];
+    for(const Vec3& q : v)
+      for(std::size_t c = 0; c < 3; ++c) {
+        lo[c] = (std::min)(lo[c], q[c]);
+        hi[c] = (std::max)(hi[c], q[c]);
+      }
+    const Vec3 origin = v[0];
+    patches_.push_back(
+      {area,
+       [=](double s, double t, mls_tools::Surface_point& out) {
+         Vec3 q{0., 0., 0.};
+         q[i0] = lo[i0] + s * (hi[i0] - lo[i0]);
+         q[i1] = lo[i1] + t * (hi[i1] - lo[i1]);
+         // the plane: dot(normal, q - origin) = 0, solved for q[k]
+         q[k] = origin[k] - (normal[i0] * (q[i0] - origin[i0]) + normal[i1] * (q[i1] - origin[i1])) / normal[k];
+         if(!inside(q)) return false;
+         out = {q, normal};
+         return true;
+       },
+       [=](const Vec3& p) {
+         const Vec3 q = p - dot(p - origin, normal) * normal;
+         if(inside(q)) return mls_tools::Surface_point{q, normal};
+         Vec3 best = v[0];
+         double best_d = std::numeric_limits<double>::infinity();
+         for(std::size_t i = 0; i < v.size(); ++i) {
+           const Vec3 a = v[i], e = v[(i + 1) % v.size()] - v[i];
+           const double t = std::clamp(dot(p - a, e) / dot(e, e), 0., 1.);
+           const Vec3 c = a + t * e;
+           const double d = norm(p - c);
+           if(d < best_d) {
+             best_d = d;
+             best = c;
+           }
+         }
+         return mls_tools::Surface_point{best, normal};
+       }});
+  }
+};
+
 struct Settings {
   double spacing = 0.03;
   std::size_t points = 0; // > 0: the spacing of each shape gives about this many points
   bool mls = true, poisson = true;
   bool space_given = false;
   bool features = true;
+  bool poisson_default = true, poisson_matched = true;
   double noise = -1; // < 0: 0.1 x spacing
   std::vector<std::string> shapes = {"solid", "solid+noise", "sphere"};
   Options::Operator op = Options::Operator::UNIFIED;
@@ -197,6 +331,7 @@ struct Settings {
   std::cout << "Usage: bench_meshing [--spacing S | --points N] [--noise SIGMA] [--shapes solid,solid+noise,sphere]\n"
                "                     [--methods mls,poisson] [--operator levin|unified]\n"
                "                     [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]\n"
+               "                     [--poisson-criteria default|matched|both]\n"
                "--noise is absolute (default 0.1 x the spacing); with --operator levin the space defaults to quadratic.\n"
                "Meshes sampled analytic solids with mls_surface_reconstruction and with CGAL's Poisson\n"
                "reconstruction (same points and normals, same run) and prints their errors against the\n"
@@ -220,6 +355,11 @@ Settings parse(int argc, char** argv) {
       if(v == "on") s.features = true;
       else if(v == "off") s.features = false;
       else usage(2);
+    } else if(a == "--poisson-criteria") {
+      const std::string v = value();
+      s.poisson_default = v == "default" || v == "both";
+      s.poisson_matched = v == "matched" || v == "both";
+      if(!s.poisson_default && !s.poisson_matched) usage(2);
     } else if(a == "--methods") {
       s.mls = s.poisson = false;
       std::stringstream ss(value());
@@ -332,7 +472,7 @@ int main(int argc, char** argv) {
   const std::string mls_name = std::string("MLS ") + (s.op == Options::Operator::LEVIN ? "levin" : "unified") + "/" +
                                space_names[int(s.space)];
   std::printf("bench_meshing: %s, noise %s, MLS = %s, Mesh_3, features %s; Poisson = "
-              "poisson_surface_reconstruction_delaunay (default criteria); threads %s\n\n",
+              "poisson_surface_reconstruction_delaunay; threads %s\n\n",
               s.points > 0 ? ("about " + std::to_string(s.points) + " points per shape").c_str()
                            : ("spacing " + fmt(s.spacing)).c_str(),
               s.noise < 0 ? "0.1 x spacing" : fmt(s.noise).c_str(), mls_name.c_str(), s.features ? "on" : "off",
@@ -342,7 +482,7 @@ int main(int argc, char** argv) {
     std::string shape;
     std::size_t points;
     double spacing, noise;
-    Figures mls, poisson;
+    Figures mls, poisson, poisson_matched;
   };
   std::vector<Row> rows;
   for(const std::string& shape : s.shapes) {
@@ -351,6 +491,10 @@ int main(int argc, char** argv) {
     if(shape == "solid") solid = std::make_unique<mls_tools::Bored_filleted_box>();
     else if(shape == "solid+noise") {
       solid = std::make_unique<mls_tools::Bored_filleted_box>();
+      noisy = true;
+    } else if(shape == "fandisk") solid = std::make_unique<Fandisk_like_block>();
+    else if(shape == "fandisk+noise") {
+      solid = std::make_unique<Fandisk_like_block>();
       noisy = true;
     } else if(shape == "sphere") solid = std::make_unique<mls_tools::Sphere_solid>(0.6);
     else {
@@ -366,7 +510,7 @@ int main(int argc, char** argv) {
                           Vector(cloud.normals[i][0], cloud.normals[i][1], cloud.normals[i][2]));
     const auto point_map = CGAL::First_of_pair_property_map<Point_with_normal>();
     const auto normal_map = CGAL::Second_of_pair_property_map<Point_with_normal>();
-    Row row{shape, points.size(), spacing, sigma, {}, {}};
+    Row row{shape, points.size(), spacing, sigma, {}, {}, {}};
 
     // Sanity checks of the analytic side: all of these should be about 0 or agree.
     {
@@ -439,23 +583,34 @@ int main(int argc, char** argv) {
                    report.facet_size, report.facet_distance, row.mls.volume);
     }
     if(s.poisson) {
-      Mesh mesh;
-      const double cpu = cpu_now();
-      const auto t = std::chrono::steady_clock::now();
-      // the average spacing is part of Poisson's pipeline (as in CGAL's example), so it is timed
-      const double average_spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(
-        points, 6, CGAL::parameters::point_map(point_map));
-      const bool ok = CGAL::poisson_surface_reconstruction_delaunay(points.begin(), points.end(), point_map, normal_map,
-                                                                   mesh, average_spacing);
-      const double seconds = seconds_since(t);
-      const double cpu_seconds = cpu_now() - cpu;
-      row.poisson = measure(mesh, *solid, spacing);
-      row.poisson.ran = true;
-      row.poisson.ok = ok && row.poisson.ok;
-      row.poisson.seconds = seconds;
-      row.poisson.cpu_seconds = cpu_seconds;
-      std::fprintf(stderr, "%s: Poisson %.1f s (cpu %.1f s)%s; average spacing %.4g; volume %.4f\n", shape.c_str(),
-                   seconds, cpu_seconds, ok ? "" : ", failed", average_spacing, row.poisson.volume);
+      // default: CGAL's example (angle 20, radius 30, distance 0.375 average spacings);
+      // matched: the criteria of mls_surface_reconstruction's defaults (angle 25, radius 2,
+      // distance 0.25 average spacings), the same resolution as the MLS mesh
+      for(int variant = 0; variant < 2; ++variant) {
+        if(variant == 0 ? !s.poisson_default : !s.poisson_matched) continue;
+        const double angle = variant == 0 ? 20. : 25., radius = variant == 0 ? 30. : 2.,
+                     distance = variant == 0 ? 0.375 : 0.25;
+        Mesh mesh;
+        const double cpu = cpu_now();
+        const auto t = std::chrono::steady_clock::now();
+        // the average spacing is part of Poisson's pipeline (as in CGAL's example), so it is timed
+        const double average_spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(
+          points, 6, CGAL::parameters::point_map(point_map));
+        const bool ok = CGAL::poisson_surface_reconstruction_delaunay(points.begin(), points.end(), point_map,
+                                                                     normal_map, mesh, average_spacing, angle,
+                                                                     radius, distance);
+        const double seconds = seconds_since(t);
+        const double cpu_seconds = cpu_now() - cpu;
+        Figures& f = variant == 0 ? row.poisson : row.poisson_matched;
+        f = measure(mesh, *solid, spacing);
+        f.ran = true;
+        f.ok = ok && f.ok;
+        f.seconds = seconds;
+        f.cpu_seconds = cpu_seconds;
+        std::fprintf(stderr, "%s: Poisson (%s criteria) %.1f s (cpu %.1f s)%s; average spacing %.4g; volume %.4f\n",
+                     shape.c_str(), variant == 0 ? "default" : "matched", seconds, cpu_seconds, ok ? "" : ", failed",
+                     average_spacing, f.volume);
+      }
     }
     rows.push_back(row);
   }
@@ -480,23 +635,29 @@ int main(int argc, char** argv) {
   };
   for(const Row& r : rows) {
     print(r, mls_name, r.mls, true);
-    print(r, "Poisson", r.poisson, false);
+    print(r, "Poisson (default criteria)", r.poisson, false);
+    print(r, "Poisson (matched criteria)", r.poisson_matched, false);
   }
   if(!s.mls || !s.poisson) return 0;
   std::printf("\nRatios Poisson / MLS (> 1: MLS better; for the times, > 1: MLS faster):\n\n");
-  std::printf("| shape | seconds | cpu s | vertex max | vertex RMS | Hausdorff | RMS | normal error | edge distance |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
-  for(const Row& r : rows) {
-    if(!r.mls.ok || !r.poisson.ok) {
-      std::printf("| %s | (a method failed) | | | | | | | |\n", r.shape.c_str());
-      continue;
+  std::printf("| shape | Poisson criteria | seconds | cpu s | vertex max | vertex RMS | Hausdorff | RMS | normal error | "
+              "edge distance |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const Row& r : rows)
+    for(int variant = 0; variant < 2; ++variant) {
+      const Figures& p = variant == 0 ? r.poisson : r.poisson_matched;
+      const char* name = variant == 0 ? "default" : "matched";
+      if(!p.ran) continue;
+      if(!r.mls.ok || !p.ok) {
+        std::printf("| %s | %s | (a method failed) | | | | | | | |\n", r.shape.c_str(), name);
+        continue;
+      }
+      std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(), name,
+                  ratio(p.seconds, r.mls.seconds).c_str(), ratio(p.cpu_seconds, r.mls.cpu_seconds).c_str(),
+                  ratio(p.vertex_max, r.mls.vertex_max).c_str(), ratio(p.vertex_rms, r.mls.vertex_rms).c_str(),
+                  ratio(p.hausdorff, r.mls.hausdorff).c_str(), ratio(p.rms, r.mls.rms).c_str(),
+                  ratio(p.normal_error, r.mls.normal_error).c_str(),
+                  r.mls.edge_distance < 0 ? "-" : ratio(p.edge_distance, r.mls.edge_distance).c_str());
     }
-    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(),
-                ratio(r.poisson.seconds, r.mls.seconds).c_str(), ratio(r.poisson.cpu_seconds, r.mls.cpu_seconds).c_str(),
-                ratio(r.poisson.vertex_max, r.mls.vertex_max).c_str(), ratio(r.poisson.vertex_rms, r.mls.vertex_rms).c_str(),
-                ratio(r.poisson.hausdorff, r.mls.hausdorff).c_str(), ratio(r.poisson.rms, r.mls.rms).c_str(),
-                ratio(r.poisson.normal_error, r.mls.normal_error).c_str(),
-                r.mls.edge_distance < 0 ? "-" : ratio(r.poisson.edge_distance, r.mls.edge_distance).c_str());
-  }
   return 0;
 }
