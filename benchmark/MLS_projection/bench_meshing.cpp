@@ -9,16 +9,20 @@
 //   - "solid": mls_mesh's built-in solid (a box with a cylindrical bore and a rounded edge:
 //     15 sharp edges, 6 corners), noiseless;
 //   - "solid+noise": the same with isotropic Gaussian noise of --noise (default 0.1 x spacing);
-//   - "sphere": a sphere of radius 0.6 (no sharp edge).
+//   - "sphere": a sphere of radius 0.6 (no sharp edge);
+//   - "fandisk", "fandisk+noise": a fandisk-like CAD block generated here (Fandisk_like_block below:
+//     an extruded polygon with a slanted face, a concave step and a chamfer; 24 sharp edges at
+//     90 to 149 degrees, convex and concave), without and with the same noise.
 // Methods:
 //   - MLS: CGAL::MLS::mls_surface_reconstruction<Parallel_if_available_tag> with the options of
 //     mls_mesh's defaults (unified operator, mixed space, Mesh_3, features on, facet size 2 and
 //     distance 0.25 times the average spacing), or --operator/--space;
 //   - Poisson: CGAL::poisson_surface_reconstruction_delaunay with the average spacing
-//     (compute_average_spacing, 6 neighbours) and its default criteria (angle 20, radius 30,
-//     distance 0.375 spacings), as in CGAL's Poisson example.
+//     (compute_average_spacing, 6 neighbours, timed with it), twice: with its default criteria
+//     (angle 20, radius 30, distance 0.375 spacings), as in CGAL's Poisson example, and with the
+//     criteria of the MLS row (angle 25, radius 2, distance 0.25 spacings: the same resolution).
 // Figures, against the exact surface (exact closest points, see builtin_solid.h):
-//   - seconds: wall time of the call;
+//   - seconds: wall time of the call (the points and exact normals are given to both methods);
 //   - vertices: maximum and RMS distance of the mesh's vertices to the surface;
 //   - Hausdorff: symmetric, approximated on samples: the facets sampled at 30000 points per unit
 //     area (CGAL::Polygon_mesh_processing::sample_triangle_mesh, random uniform, fixed seed) and
@@ -29,9 +33,19 @@
 //   - edge distance: mean distance to the mesh from points 0.005 apart along the true sharp edges.
 // All lengths are in the unit of the shape (the solid is 2 x 1.2 x 0.8, the sphere's radius 0.6).
 //
-// Usage: bench_meshing [--spacing S] [--noise SIGMA] [--shapes solid,solid+noise,sphere]
-//                      [--operator levin|unified] [--space plane|quadratic|wedge|mixed]
-//                      [--threads N]
+//   - cpu s: the process's CPU time (user + system, all threads, getrusage) over the call: on a
+//     shared machine the more trustworthy time.
+// Sanity checks printed on stderr (they should read about 0, or agree): the input points' distance
+// to the surface (0 without noise, about the noise otherwise), the true edges' distance to the
+// surface (0), the dense sample's (0), each mesh's volume against the solid's (Monte Carlo), and,
+// for the sphere, the figures of an inscribed UV sphere whose Hausdorff distance is known.
+//
+// Usage: bench_meshing [--spacing S | --points N] [--noise SIGMA] [--shapes solid,solid+noise,sphere]
+//                      [--methods mls,poisson] [--operator levin|unified]
+//                      [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]
+//                      [--poisson-criteria default|matched|both]
+// Shapes: solid, solid+noise, sphere (the default list), fandisk, fandisk+noise.
+// --points N samples each shape at the spacing that gives about N points (sqrt(area / N)).
 
 #include <CGAL/MLS_projection/Meshing_options.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
@@ -47,6 +61,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/poisson_surface_reconstruction.h>
 #include <CGAL/property_map.h>
@@ -55,13 +70,17 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -82,7 +101,9 @@ mls_tools::Vec3 to_vec(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 struct Figures {
   bool ok = false;
-  double seconds = 0;
+  bool ran = false;
+  double seconds = 0, cpu_seconds = 0;
+  double volume = 0; // 0: not closed
   std::size_t vertices = 0, facets = 0;
   bool closed = false;
   double vertex_max = 0, vertex_rms = 0;
@@ -99,6 +120,7 @@ Figures measure(const Mesh& mesh, const mls_tools::Analytic_solid& solid, double
   f.vertices = mesh.number_of_vertices();
   f.facets = mesh.number_of_faces();
   f.closed = CGAL::is_closed(mesh);
+  if(f.closed) f.volume = PMP::volume(mesh);
   double s2 = 0;
   for(auto v : mesh.vertices()) {
     const double d = std::abs(solid.signed_distance(to_vec(mesh.point(v))));
@@ -166,8 +188,138 @@ Figures measure(const Mesh& mesh, const mls_tools::Analytic_solid& solid, double
   return f;
 }
 
+
+/// A fandisk-like CAD block, generated here (CGAL's fandisk.off itself is not used): the polygon
+/// P0..P7 of the (x, z) plane below extruded along y over [-0.5, 0.5]. Its profile has a slanted
+/// face (dihedral angles 104 and 149 degrees with its neighbours), a concave step (270 degrees
+/// inside: a concave 90-degree edge) and a 45-degree chamfer (two 135-degree edges); the caps
+/// meet the sides at 90 degrees. Sharp: the 8 extrusion edges and the 16 cap edges; 16 corners.
+/// Every face is planar; the caps are split into two convex pieces along z = 0.1 (not an edge).
+/// Closest points are exact: the nearest of the faces' closest points, each the projection on the
+/// face's plane when it falls inside the (convex) face, else the nearest point of its boundary.
+class Fandisk_like_block : public mls_tools::Analytic_solid {
+public:
+  using Vec3 = mls_tools::Vec3;
+  using Vec2 = std::array<double, 2>; // (x, z)
+
+  Fandisk_like_block() {
+    const std::vector<Vec2> profile = {{-1., -0.4}, {1., -0.4}, {1., -0.2}, {0.5, 0.1},
+                                       {0.2, 0.1},  {0.2, 0.2}, {0., 0.4},  {-1., 0.4}};
+    pieces_ = {{{-1., -0.4}, {1., -0.4}, {1., -0.2}, {0.5, 0.1}, {0.2, 0.1}, {-1., 0.1}},
+               {{-1., 0.1}, {0.2, 0.1}, {0.2, 0.2}, {0., 0.4}, {-1., 0.4}}};
+    const auto at = [](const Vec2& q, double y) { return Vec3{q[0], y, q[1]}; };
+    // caps: y = +-b, each convex piece a face (outward normal +-y)
+    for(double sy : {-1., 1.})
+      for(const auto& piece : pieces_) {
+        std::vector<Vec3> face;
+        for(const Vec2& q : piece) face.push_back(at(q, sy * b));
+        // the profile is counterclockwise in (x, z), i.e. seen from -y: reversed on the cap y = +b
+        if(sy > 0) std::reverse(face.begin(), face.end()); // counterclockwise seen from outside
+        add_convex_face(face);
+      }
+    // sides: the profile's edges extruded (the profile is counterclockwise in (x, z))
+    const std::size_t n = profile.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Vec2 &p = profile[i], &q = profile[(i + 1) % n];
+      add_convex_face({at(p, -b), at(p, b), at(q, b), at(q, -b)}); // counterclockwise seen from outside
+      add_segment(at(p, -b), at(p, b));
+      for(double sy : {-1., 1.}) add_segment(at(p, sy * b), at(q, sy * b));
+      for(double sy : {-1., 1.}) corners_.push_back(at(p, sy * b));
+    }
+  }
+  std::string name() const override { return "fandisk-like block"; }
+  bool contains(const Vec3& p) const override {
+    if(std::abs(p[1]) >= b) return false;
+    for(const auto& piece : pieces_) {
+      bool inside = true;
+      for(std::size_t i = 0; i < piece.size() && inside; ++i) {
+        const Vec2 &u = piece[i], &v = piece[(i + 1) % piece.size()];
+        inside = (v[0] - u[0]) * (p[2] - u[1]) - (v[1] - u[1]) * (p[0] - u[0]) > 0;
+      }
+      if(inside) return true;
+    }
+    return false;
+  }
+  std::array<Vec3, 2> bounding_box() const override { return {Vec3{-1., -b, -0.4}, Vec3{1., b, 0.4}}; }
+
+private:
+  static constexpr double b = 0.5;
+  std::vector<std::vector<Vec2>> pieces_;
+
+  static Vec3 cross(const Vec3& u, const Vec3& v) {
+    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  }
+  /// A planar convex polygon, vertices counterclockwise seen from outside.
+  void add_convex_face(const std::vector<Vec3>& v) {
+    using mls_tools::dot;
+    using mls_tools::norm;
+    using mls_tools::operator-;
+    using mls_tools::operator+;
+    using mls_tools::operator*;
+    Vec3 normal{0., 0., 0.};
+    for(std::size_t i = 1; i + 1 < v.size(); ++i) {
+      const Vec3 c = cross(v[i] - v[0], v[i + 1] - v[0]);
+      normal = normal + c;
+    }
+    const double area = norm(normal) / 2;
+    normal = (1. / norm(normal)) * normal;
+    const auto inside = [v, normal](const Vec3& q) {
+      for(std::size_t i = 0; i < v.size(); ++i)
+        if(dot(cross(v[(i + 1) % v.size()] - v[i], q - v[i]), normal) < 0) return false;
+      return true;
+    };
+    // sampling: uniform in the bounding box of the face's vertices, projected on the face's
+    // plane along its largest normal coordinate (uniform by area too), rejected outside
+    std::size_t k = 0;
+    for(std::size_t c = 1; c < 3; ++c)
+      if(std::abs(normal[c]) > std::abs(normal[k])) k = c;
+    const std::size_t i0 = (k + 1) % 3, i1 = (k + 2) % 3;
+    Vec3 lo = v[0], hi = v[0];
+    for(const Vec3& q : v)
+      for(std::size_t c = 0; c < 3; ++c) {
+        lo[c] = (std::min)(lo[c], q[c]);
+        hi[c] = (std::max)(hi[c], q[c]);
+      }
+    const Vec3 origin = v[0];
+    patches_.push_back(
+      {area,
+       [=](double s, double t, mls_tools::Surface_point& out) {
+         Vec3 q{0., 0., 0.};
+         q[i0] = lo[i0] + s * (hi[i0] - lo[i0]);
+         q[i1] = lo[i1] + t * (hi[i1] - lo[i1]);
+         // the plane: dot(normal, q - origin) = 0, solved for q[k]
+         q[k] = origin[k] - (normal[i0] * (q[i0] - origin[i0]) + normal[i1] * (q[i1] - origin[i1])) / normal[k];
+         if(!inside(q)) return false;
+         out = {q, normal};
+         return true;
+       },
+       [=](const Vec3& p) {
+         const Vec3 q = p - dot(p - origin, normal) * normal;
+         if(inside(q)) return mls_tools::Surface_point{q, normal};
+         Vec3 best = v[0];
+         double best_d = std::numeric_limits<double>::infinity();
+         for(std::size_t i = 0; i < v.size(); ++i) {
+           const Vec3 a = v[i], e = v[(i + 1) % v.size()] - v[i];
+           const double t = std::clamp(dot(p - a, e) / dot(e, e), 0., 1.);
+           const Vec3 c = a + t * e;
+           const double d = norm(p - c);
+           if(d < best_d) {
+             best_d = d;
+             best = c;
+           }
+         }
+         return mls_tools::Surface_point{best, normal};
+       }});
+  }
+};
+
 struct Settings {
   double spacing = 0.03;
+  std::size_t points = 0; // > 0: the spacing of each shape gives about this many points
+  bool mls = true, poisson = true;
+  bool space_given = false;
+  bool features = true;
+  bool poisson_default = true, poisson_matched = true;
   double noise = -1; // < 0: 0.1 x spacing
   std::vector<std::string> shapes = {"solid", "solid+noise", "sphere"};
   Options::Operator op = Options::Operator::UNIFIED;
@@ -176,8 +328,11 @@ struct Settings {
 };
 
 [[noreturn]] void usage(int code) {
-  std::cout << "Usage: bench_meshing [--spacing S] [--noise SIGMA] [--shapes solid,solid+noise,sphere]\n"
-               "                     [--operator levin|unified] [--space plane|quadratic|wedge|mixed] [--threads N]\n"
+  std::cout << "Usage: bench_meshing [--spacing S | --points N] [--noise SIGMA] [--shapes solid,solid+noise,sphere]\n"
+               "                     [--methods mls,poisson] [--operator levin|unified]\n"
+               "                     [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]\n"
+               "                     [--poisson-criteria default|matched|both]\n"
+               "--noise is absolute (default 0.1 x the spacing); with --operator levin the space defaults to quadratic.\n"
                "Meshes sampled analytic solids with mls_surface_reconstruction and with CGAL's Poisson\n"
                "reconstruction (same points and normals, same run) and prints their errors against the\n"
                "exact surface as a markdown table (see the top of bench_meshing.cpp for the figures).\n";
@@ -194,6 +349,27 @@ Settings parse(int argc, char** argv) {
     };
     if(a == "--help" || a == "-h") usage(0);
     else if(a == "--spacing") s.spacing = std::stod(value());
+    else if(a == "--points") s.points = std::size_t(std::stoul(value()));
+    else if(a == "--features") {
+      const std::string v = value();
+      if(v == "on") s.features = true;
+      else if(v == "off") s.features = false;
+      else usage(2);
+    } else if(a == "--poisson-criteria") {
+      const std::string v = value();
+      s.poisson_default = v == "default" || v == "both";
+      s.poisson_matched = v == "matched" || v == "both";
+      if(!s.poisson_default && !s.poisson_matched) usage(2);
+    } else if(a == "--methods") {
+      s.mls = s.poisson = false;
+      std::stringstream ss(value());
+      std::string item;
+      while(std::getline(ss, item, ',')) {
+        if(item == "mls") s.mls = true;
+        else if(item == "poisson") s.poisson = true;
+        else usage(2);
+      }
+    }
     else if(a == "--noise") s.noise = std::stod(value());
     else if(a == "--threads") s.threads = std::stoi(value());
     else if(a == "--shapes") {
@@ -213,12 +389,60 @@ Settings parse(int argc, char** argv) {
       else if(v == "wedge") s.space = Options::Space::WEDGE;
       else if(v == "mixed") s.space = Options::Space::MIXED;
       else usage(2);
+      s.space_given = true;
     } else
       usage(2);
   }
-  if(s.noise < 0) s.noise = 0.1 * s.spacing;
+  if(s.op == Options::Operator::LEVIN && !s.space_given) s.space = Options::Space::QUADRATIC;
   if(!(s.spacing > 0)) usage(2);
   return s;
+}
+
+double cpu_now() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// The solid's volume by Monte Carlo in its bounding box (fixed seed), for the sanity check.
+double monte_carlo_volume(const mls_tools::Analytic_solid& solid, std::size_t n = 1000000) {
+  const auto box = solid.bounding_box();
+  mls_tools::Random random(99);
+  std::size_t in = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    mls_tools::Vec3 p;
+    for(std::size_t k = 0; k < 3; ++k) p[k] = box[0][k] + random.uniform() * (box[1][k] - box[0][k]);
+    if(solid.contains(p)) ++in;
+  }
+  double v = 1;
+  for(std::size_t k = 0; k < 3; ++k) v *= box[1][k] - box[0][k];
+  return v * double(in) / double(n);
+}
+
+/// A UV sphere of radius r centred at the origin, every vertex on the sphere, `rings` latitude bands
+/// and 2 rings longitude bands: its facets lie inside the sphere, at most r (1 - cos(rho)) from it,
+/// rho the largest angular circumradius of a facet, below pi / rings / sqrt(2) (half the diagonal
+/// of the largest band cell). A reference for the distance measures.
+Mesh uv_sphere(double r, int rings) {
+  Mesh mesh;
+  const int sectors = 2 * rings;
+  std::vector<Mesh::Vertex_index> v;
+  const auto top = mesh.add_vertex(Point(0, 0, r)), bottom = mesh.add_vertex(Point(0, 0, -r));
+  for(int i = 1; i < rings; ++i)
+    for(int j = 0; j < sectors; ++j) {
+      const double t = M_PI * i / rings, f = 2 * M_PI * j / sectors;
+      v.push_back(mesh.add_vertex(Point(r * std::sin(t) * std::cos(f), r * std::sin(t) * std::sin(f), r * std::cos(t))));
+    }
+  const auto at = [&](int i, int j) { return v[std::size_t((i - 1) * sectors + (j % sectors))]; };
+  for(int j = 0; j < sectors; ++j) {
+    mesh.add_face(top, at(1, j), at(1, j + 1));
+    mesh.add_face(bottom, at(rings - 1, j + 1), at(rings - 1, j));
+    for(int i = 1; i + 1 < rings; ++i) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+  return mesh;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -245,106 +469,195 @@ int main(int argc, char** argv) {
   if(s.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
 #endif
   const char* const space_names[] = {"plane", "quadratic", "wedge", "mixed"};
-  std::printf("bench_meshing: spacing %g, noise %g, MLS = %s/%s, Mesh_3, features on; Poisson = "
-              "poisson_surface_reconstruction_delaunay (default criteria)\n\n",
-              s.spacing, s.noise, s.op == Options::Operator::LEVIN ? "levin" : "unified", space_names[int(s.space)]);
+  const std::string mls_name = std::string("MLS ") + (s.op == Options::Operator::LEVIN ? "levin" : "unified") + "/" +
+                               space_names[int(s.space)];
+  std::printf("bench_meshing: %s, noise %s, MLS = %s, Mesh_3, features %s; Poisson = "
+              "poisson_surface_reconstruction_delaunay; threads %s\n\n",
+              s.points > 0 ? ("about " + std::to_string(s.points) + " points per shape").c_str()
+                           : ("spacing " + fmt(s.spacing)).c_str(),
+              s.noise < 0 ? "0.1 x spacing" : fmt(s.noise).c_str(), mls_name.c_str(), s.features ? "on" : "off",
+              s.threads > 0 ? std::to_string(s.threads).c_str() : "all");
 
   struct Row {
     std::string shape;
     std::size_t points;
-    Figures mls, poisson;
+    double spacing, noise;
+    Figures mls, poisson, poisson_matched;
   };
   std::vector<Row> rows;
   for(const std::string& shape : s.shapes) {
     std::unique_ptr<mls_tools::Analytic_solid> solid;
-    double sigma = 0;
+    bool noisy = false;
     if(shape == "solid") solid = std::make_unique<mls_tools::Bored_filleted_box>();
     else if(shape == "solid+noise") {
       solid = std::make_unique<mls_tools::Bored_filleted_box>();
-      sigma = s.noise;
+      noisy = true;
+    } else if(shape == "fandisk") solid = std::make_unique<Fandisk_like_block>();
+    else if(shape == "fandisk+noise") {
+      solid = std::make_unique<Fandisk_like_block>();
+      noisy = true;
     } else if(shape == "sphere") solid = std::make_unique<mls_tools::Sphere_solid>(0.6);
     else {
       std::cerr << "bench_meshing: unknown shape '" << shape << "'\n";
       return 2;
     }
-    const mls_tools::Point_cloud cloud = solid->sample(s.spacing, sigma);
+    const double spacing = s.points > 0 ? std::sqrt(solid->area() / double(s.points)) : s.spacing;
+    const double sigma = noisy ? (s.noise < 0 ? 0.1 * spacing : s.noise) : 0.;
+    const mls_tools::Point_cloud cloud = solid->sample(spacing, sigma);
     std::vector<Point_with_normal> points;
     for(std::size_t i = 0; i < cloud.size(); ++i)
       points.emplace_back(Point(cloud.points[i][0], cloud.points[i][1], cloud.points[i][2]),
                           Vector(cloud.normals[i][0], cloud.normals[i][1], cloud.normals[i][2]));
     const auto point_map = CGAL::First_of_pair_property_map<Point_with_normal>();
     const auto normal_map = CGAL::Second_of_pair_property_map<Point_with_normal>();
-    Row row{shape, points.size(), {}, {}};
+    Row row{shape, points.size(), spacing, sigma, {}, {}, {}};
 
+    // Sanity checks of the analytic side: all of these should be about 0 or agree.
     {
+      double input_max = 0, input_s2 = 0;
+      for(const auto& p : cloud.points) {
+        const double d = std::abs(solid->signed_distance(p));
+        input_max = (std::max)(input_max, d);
+        input_s2 += d * d;
+      }
+      double edge_max = 0;
+      for(const auto& polyline : solid->sharp_edges(0.005))
+        for(const auto& p : polyline) edge_max = (std::max)(edge_max, std::abs(solid->signed_distance(p)));
+      double dense_max = 0;
+      for(const auto& p : solid->sample(spacing / 3., 0., 77).points)
+        dense_max = (std::max)(dense_max, std::abs(solid->signed_distance(p)));
+      std::fprintf(stderr,
+                   "%s: %zu points, spacing %.4g, noise %.3g; sanity: input to surface max %.3g RMS %.3g (noise "
+                   "sigma %.3g), true edges to surface max %.2g, dense sample to surface max %.2g, volume %.4f (Monte "
+                   "Carlo)\n",
+                   shape.c_str(), points.size(), spacing, sigma, input_max,
+                   std::sqrt(input_s2 / double(cloud.points.size())), sigma, edge_max, dense_max,
+                   monte_carlo_volume(*solid));
+      if(shape == "sphere") {
+        const int rings = 40;
+        const Figures f = measure(uv_sphere(0.6, rings), *solid, spacing);
+        const double bound = 0.6 * (1 - std::cos(M_PI / rings / std::sqrt(2.)));
+        std::fprintf(stderr,
+                     "sphere: sanity: inscribed UV sphere (%d bands): vertex max %.2g, Hausdorff %.3g (bound %.3g), "
+                     "RMS %.3g, normal error %.3f deg, volume %.4f (exact %.4f)\n",
+                     rings, f.vertex_max, f.hausdorff, bound, f.rms, f.normal_error, f.volume,
+                     4. / 3. * M_PI * 0.6 * 0.6 * 0.6);
+      }
+    }
+
+    if(s.mls) {
       Options options;
       options.projection_operator = s.op;
       options.space = s.space;
+      options.features = s.features;
       CGAL::MLS::Meshing_report report;
       options.report = &report;
+      const auto start = std::chrono::steady_clock::now();
+      std::string last_stage;
+      options.stage_progress = [&](const char* stage, double) {
+        if(stage != last_stage) {
+          last_stage = stage;
+          std::fprintf(stderr, "%s: MLS stage %s at %.1f s\n", shape.c_str(), stage, seconds_since(start));
+        }
+      };
       Mesh mesh;
+      const double cpu = cpu_now();
       const auto t = std::chrono::steady_clock::now();
       const bool ok = CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(
         points, mesh, options, CGAL::parameters::point_map(point_map).normal_map(normal_map));
       const double seconds = seconds_since(t);
-      row.mls = measure(mesh, *solid, s.spacing);
+      const double cpu_seconds = cpu_now() - cpu;
+      row.mls = measure(mesh, *solid, spacing);
+      row.mls.ran = true;
       row.mls.ok = ok && row.mls.ok;
       row.mls.seconds = seconds;
+      row.mls.cpu_seconds = cpu_seconds;
       row.mls.feature_polylines = report.feature_polylines;
       row.mls.corners = report.corners;
-      std::fprintf(stderr, "%s: MLS %.1f s%s%s (seeds %.1f s, features %.1f s, meshing %.1f s)\n", shape.c_str(),
-                   seconds, ok ? "" : ", failed: ", ok ? "" : report.failure, report.seconds_seeds,
-                   report.seconds_features, report.seconds_meshing);
+      std::fprintf(stderr,
+                   "%s: MLS %.1f s (cpu %.1f s)%s%s (normals %.1f s, seeds %.1f s: %zu seeds, %zu failed; features "
+                   "%.1f s; meshing %.1f s, %zu evaluations; h %.4g, facet size %.4g, distance %.4g); volume %.4f\n",
+                   shape.c_str(), seconds, cpu_seconds, ok ? "" : ", failed: ", ok ? "" : report.failure,
+                   report.seconds_normals, report.seconds_seeds, report.seeds, report.failed_seeds,
+                   report.seconds_features, report.seconds_meshing, report.evaluations, report.bandwidth,
+                   report.facet_size, report.facet_distance, row.mls.volume);
     }
-    {
-      Mesh mesh;
-      const double spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(
-        points, 6, CGAL::parameters::point_map(point_map));
-      const auto t = std::chrono::steady_clock::now();
-      const bool ok = CGAL::poisson_surface_reconstruction_delaunay(points.begin(), points.end(), point_map, normal_map,
-                                                                   mesh, spacing);
-      const double seconds = seconds_since(t);
-      row.poisson = measure(mesh, *solid, s.spacing);
-      row.poisson.ok = ok && row.poisson.ok;
-      row.poisson.seconds = seconds;
-      std::fprintf(stderr, "%s: Poisson %.1f s%s\n", shape.c_str(), seconds, ok ? "" : ", failed");
+    if(s.poisson) {
+      // default: CGAL's example (angle 20, radius 30, distance 0.375 average spacings);
+      // matched: the criteria of mls_surface_reconstruction's defaults (angle 25, radius 2,
+      // distance 0.25 average spacings), the same resolution as the MLS mesh
+      for(int variant = 0; variant < 2; ++variant) {
+        if(variant == 0 ? !s.poisson_default : !s.poisson_matched) continue;
+        const double angle = variant == 0 ? 20. : 25., radius = variant == 0 ? 30. : 2.,
+                     distance = variant == 0 ? 0.375 : 0.25;
+        Mesh mesh;
+        const double cpu = cpu_now();
+        const auto t = std::chrono::steady_clock::now();
+        // the average spacing is part of Poisson's pipeline (as in CGAL's example), so it is timed
+        const double average_spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(
+          points, 6, CGAL::parameters::point_map(point_map));
+        const bool ok = CGAL::poisson_surface_reconstruction_delaunay(points.begin(), points.end(), point_map,
+                                                                     normal_map, mesh, average_spacing, angle,
+                                                                     radius, distance);
+        const double seconds = seconds_since(t);
+        const double cpu_seconds = cpu_now() - cpu;
+        Figures& f = variant == 0 ? row.poisson : row.poisson_matched;
+        f = measure(mesh, *solid, spacing);
+        f.ran = true;
+        f.ok = ok && f.ok;
+        f.seconds = seconds;
+        f.cpu_seconds = cpu_seconds;
+        std::fprintf(stderr, "%s: Poisson (%s criteria) %.1f s (cpu %.1f s)%s; average spacing %.4g; volume %.4f\n",
+                     shape.c_str(), variant == 0 ? "default" : "matched", seconds, cpu_seconds, ok ? "" : ", failed",
+                     average_spacing, f.volume);
+      }
     }
     rows.push_back(row);
   }
 
-  std::printf("| shape | points | method | seconds | vertices | facets | closed | vertex max | vertex RMS | Hausdorff | RMS "
-              "| normal error (deg) | edge distance | features |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  const auto print = [](const Row& r, const char* method, const Figures& f) {
+  std::printf("| shape | points | method | seconds | cpu s | vertices | facets | closed | vertex max | vertex RMS | "
+              "Hausdorff | RMS | normal error (deg) | edge distance | features |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const auto print = [](const Row& r, const std::string& method, const Figures& f, bool is_mls) {
+    if(!f.ran) return;
     if(!f.ok) {
-      std::printf("| %s | %zu | %s | %.1f | failed | | | | | | | | | |\n", r.shape.c_str(), r.points, method, f.seconds);
+      std::printf("| %s | %zu | %s | %.1f | %.1f | failed | | | | | | | | | |\n", r.shape.c_str(), r.points,
+                  method.c_str(), f.seconds, f.cpu_seconds);
       return;
     }
-    std::printf("| %s | %zu | %s | %.1f | %zu | %zu | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(), r.points,
-                method, f.seconds, f.vertices, f.facets, f.closed ? "yes" : "no", fmt(f.vertex_max).c_str(),
-                fmt(f.vertex_rms).c_str(), fmt(f.hausdorff).c_str(), fmt(f.rms).c_str(), fmt(f.normal_error, "%.2f").c_str(),
-                f.edge_distance < 0 ? "-" : fmt(f.edge_distance).c_str(),
-                std::string(method) == "Poisson" ? "-"
-                                                 : (std::to_string(f.feature_polylines) + " polylines, " +
-                                                    std::to_string(f.corners) + " corners").c_str());
+    std::printf("| %s | %zu | %s | %.1f | %.1f | %zu | %zu | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(),
+                r.points, method.c_str(), f.seconds, f.cpu_seconds, f.vertices, f.facets, f.closed ? "yes" : "no",
+                fmt(f.vertex_max).c_str(), fmt(f.vertex_rms).c_str(), fmt(f.hausdorff).c_str(), fmt(f.rms).c_str(),
+                fmt(f.normal_error, "%.2f").c_str(), f.edge_distance < 0 ? "-" : fmt(f.edge_distance).c_str(),
+                !is_mls ? "-"
+                        : (std::to_string(f.feature_polylines) + " polylines, " + std::to_string(f.corners) + " corners")
+                            .c_str());
   };
   for(const Row& r : rows) {
-    print(r, "MLS", r.mls);
-    print(r, "Poisson", r.poisson);
+    print(r, mls_name, r.mls, true);
+    print(r, "Poisson (default criteria)", r.poisson, false);
+    print(r, "Poisson (matched criteria)", r.poisson_matched, false);
   }
-  std::printf("\nRatios Poisson / MLS (> 1: MLS better; for seconds, > 1: MLS faster):\n\n");
-  std::printf("| shape | seconds | vertex max | vertex RMS | Hausdorff | RMS | normal error | edge distance |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
-  for(const Row& r : rows) {
-    if(!r.mls.ok || !r.poisson.ok) {
-      std::printf("| %s | (a method failed) | | | | | | |\n", r.shape.c_str());
-      continue;
+  if(!s.mls || !s.poisson) return 0;
+  std::printf("\nRatios Poisson / MLS (> 1: MLS better; for the times, > 1: MLS faster):\n\n");
+  std::printf("| shape | Poisson criteria | seconds | cpu s | vertex max | vertex RMS | Hausdorff | RMS | normal error | "
+              "edge distance |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const Row& r : rows)
+    for(int variant = 0; variant < 2; ++variant) {
+      const Figures& p = variant == 0 ? r.poisson : r.poisson_matched;
+      const char* name = variant == 0 ? "default" : "matched";
+      if(!p.ran) continue;
+      if(!r.mls.ok || !p.ok) {
+        std::printf("| %s | %s | (a method failed) | | | | | | | |\n", r.shape.c_str(), name);
+        continue;
+      }
+      std::printf("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(), name,
+                  ratio(p.seconds, r.mls.seconds).c_str(), ratio(p.cpu_seconds, r.mls.cpu_seconds).c_str(),
+                  ratio(p.vertex_max, r.mls.vertex_max).c_str(), ratio(p.vertex_rms, r.mls.vertex_rms).c_str(),
+                  ratio(p.hausdorff, r.mls.hausdorff).c_str(), ratio(p.rms, r.mls.rms).c_str(),
+                  ratio(p.normal_error, r.mls.normal_error).c_str(),
+                  r.mls.edge_distance < 0 ? "-" : ratio(p.edge_distance, r.mls.edge_distance).c_str());
     }
-    std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", r.shape.c_str(), ratio(r.poisson.seconds, r.mls.seconds).c_str(),
-                ratio(r.poisson.vertex_max, r.mls.vertex_max).c_str(), ratio(r.poisson.vertex_rms, r.mls.vertex_rms).c_str(),
-                ratio(r.poisson.hausdorff, r.mls.hausdorff).c_str(), ratio(r.poisson.rms, r.mls.rms).c_str(),
-                ratio(r.poisson.normal_error, r.mls.normal_error).c_str(),
-                r.mls.edge_distance < 0 ? "-" : ratio(r.poisson.edge_distance, r.mls.edge_distance).c_str());
-  }
   return 0;
 }
