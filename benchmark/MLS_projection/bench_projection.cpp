@@ -575,25 +575,30 @@ int main(int argc, char** argv) {
     torus.noise = noise;
     inputs.push_back(std::move(torus));
   }
+  // A noiseless input, then (noise_in_h >= 0) its copy with Gaussian noise of noise_in_h times
+  // the noiseless sample's bandwidth h; returns h.
+  const auto add_with_noisy_copy = [&inputs](Input input, double noise_in_h, std::uint64_t noise_seed) {
+    const double h = CGAL::MLS::Levin_projection<Kernel>(input.points).bandwidth();
+    if(noise_in_h >= 0) {
+      Input noisy = input;
+      noisy.noise = noise_in_h * h;
+      noisy.name += "+noise";
+      noisy.points = add_noise(input.points, noisy.noise, noise_seed);
+      inputs.push_back(std::move(input));
+      inputs.push_back(std::move(noisy));
+    } else {
+      inputs.push_back(std::move(input));
+    }
+    return h;
+  };
   double cube_h = 0;
   if(cube_size > 0) {
     Input cube;
     cube.name = "cube";
     cube.shape = Shape::CUBE;
     cube.points = sample_cube(cube_size, seed);
-    cube_h = CGAL::MLS::Levin_projection<Kernel>(cube.points).bandwidth();
-    if(cube_noise >= 0) {
-      Input noisy = cube;
-      noisy.noise = cube_noise * cube_h;
-      noisy.name = "cube+noise";
-      noisy.points = add_noise(cube.points, noisy.noise, seed + 1);
-      inputs.push_back(std::move(cube));
-      inputs.push_back(std::move(noisy));
-    } else {
-      inputs.push_back(std::move(cube));
-    }
+    cube_h = add_with_noisy_copy(std::move(cube), cube_noise, seed + 1);
   }
-
   double solid_h = 0;
   if(solid_spacing > 0) {
     Input solid;
@@ -601,17 +606,7 @@ int main(int argc, char** argv) {
     solid.shape = Shape::SOLID;
     solid.solid = std::make_shared<const Solid>();
     for(const auto& p : mls_tools::builtin_solid_points(solid_spacing).points) solid.points.emplace_back(p[0], p[1], p[2]);
-    solid_h = CGAL::MLS::Levin_projection<Kernel>(solid.points).bandwidth();
-    if(solid_noise >= 0) {
-      Input noisy = solid;
-      noisy.noise = solid_noise * solid_h;
-      noisy.name = "solid+noise";
-      noisy.points = add_noise(solid.points, noisy.noise, seed + 2);
-      inputs.push_back(std::move(solid));
-      inputs.push_back(std::move(noisy));
-    } else {
-      inputs.push_back(std::move(solid));
-    }
+    solid_h = add_with_noisy_copy(std::move(solid), solid_noise, seed + 2);
   }
 
   std::cout << "MLS_projection benchmark: torus R=" << major_radius << " r=" << minor_radius
