@@ -391,6 +391,7 @@ protected:
     // Residuals sqrt(w_i / W) d_i (zero outside the support), then the displacement penalty
     // and the space's regularisation; with `J`, their derivatives.
     std::vector<double> w(nbh.size());
+    Eigen::VectorXd C_at_last_evaluation = Eigen::VectorXd::Zero(D); // watched by the optimiser
     std::vector<int> active;
     std::vector<V> y;
     std::vector<Closest_point<D>> cps;
@@ -400,6 +401,7 @@ protected:
       Parameters c;
       unpack(x, f, c);
       const V C = f.to_local(space_.closest_point(c, f.to_frame(r)).point);
+      C_at_last_evaluation = C;
       res.setZero();
       if(J) J->setZero();
       double W = 0;
@@ -507,9 +509,16 @@ protected:
     // An exact fit stops at once. On noisy data, the energy has long, nearly flat valleys
     // (moving the origin tangentially while tilting the frame and bending the function changes
     // the surface near C(r) very little), along which the steps would crawl for hundreds of
-    // iterations, gaining a few 1e-5 of the energy: stop when 10 evaluations gain less than 1e-6.
+    // iterations, gaining a few 1e-5 of the energy: stop when 10 evaluations gain less than 1e-6,
+    // or when 10 improving ones move C(r) by less than 1e-5 h and gain less than 1%. Measured
+    // (see the benchmark's README): on the noisy built-in solid a crawl of 1200 evaluations moved
+    // C(r) by 1.4e-3 h in all, and this stop makes P_U 3 times faster with the same accuracy; on
+    // a noisy circle (2D) it leaves C(r) up to 1.3e-3 h (2% of the noise) from where the whole
+    // crawl ends, which bounds the projection property there.
     settings.absolute_value = exact_value;
     settings.stall_tolerance = 1e-6;
+    settings.watched = &C_at_last_evaluation;
+    settings.watch_tolerance = 1e-5;
     settings.max_evaluations =
       max_evaluations > 0 ? max_evaluations : this->options_.max_evaluations * (n + 1) / (D + 1);
     internal::Minimizer_report report;
@@ -517,6 +526,7 @@ protected:
       report = internal::minimize_sum_of_squares(residuals, jacobian, m, x0, settings);
     } else {
       settings.stall_evaluations *= n + 1; // the forward differences are evaluations too
+      settings.watch_evaluations *= n + 1;
       report = internal::minimize_sum_of_squares(residuals, m, x0, settings);
     }
 

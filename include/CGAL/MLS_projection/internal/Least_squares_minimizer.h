@@ -34,6 +34,16 @@ struct Minimizer_settings {
   // Stop as soon as the sum of squares falls below this value (0: never): MINPACK's tests
   // are relative, and a zero-residual fit would otherwise spend its budget on rounding noise.
   double absolute_value = 0;
+  // When `watched` is set (a quantity the residual function updates at every evaluation, e.g.
+  // the point the caller returns) and `watch_tolerance` is positive: also stop when, over a
+  // window of `watch_evaluations` improving evaluations (rejected trial steps do not count), the
+  // watched quantity at the lowest sum of squares moved by less than `watch_tolerance` and that
+  // sum fell by less than the fraction `watch_energy_tolerance`: the steps still lower the sum
+  // but hardly change the answer.
+  const Eigen::VectorXd* watched = nullptr;
+  double watch_tolerance = 0;
+  double watch_energy_tolerance = 1e-2;
+  int watch_evaluations = 10;
 };
 
 struct Minimizer_report {
@@ -60,17 +70,26 @@ struct Residual_functor {
   int operator()(const InputType& x, ValueType& r) const {
     (*f_)(x, r);
     const double value = r.squaredNorm();
-    if(!(value < best_)) {
-      if(stall_tolerance > 0 && ++since_mark_ >= stall_evaluations) return -1;
-      return 0;
+    const bool improved = value < best_;
+    if(improved) {
+      best_ = value;
+      solution = x;
+      if(settings.watched) best_watched_ = *settings.watched;
+      if(value < settings.absolute_value) return -1;
     }
-    best_ = value;
-    solution = x;
-    if(value < absolute_value) return -1;
-    if(value < mark_ * (1. - stall_tolerance)) { // a real improvement: restart the window
+    if(improved && settings.watch_tolerance > 0 && settings.watched && ++since_watch_mark_ >= settings.watch_evaluations) {
+      if(watch_mark_.size() == best_watched_.size() && (best_watched_ - watch_mark_).norm() < settings.watch_tolerance &&
+         best_ > watch_mark_value_ * (1. - settings.watch_energy_tolerance))
+        return -1;
+      watch_mark_ = best_watched_;
+      watch_mark_value_ = best_;
+      since_watch_mark_ = 0;
+    }
+    const double stall = settings.stall_tolerance;
+    if(improved && value < mark_ * (1. - stall)) { // a real improvement: restart the window
       mark_ = value;
       since_mark_ = 0;
-    } else if(stall_tolerance > 0 && ++since_mark_ >= stall_evaluations) {
+    } else if(stall > 0 && ++since_mark_ >= settings.stall_evaluations) {
       return -1;
     }
     return 0;
@@ -78,11 +97,13 @@ struct Residual_functor {
 
   const ResidualFunction* f_;
   int n_, m_;
-  double absolute_value = 0, stall_tolerance = 0;
-  int stall_evaluations = 10;
+  Minimizer_settings settings;
   mutable Eigen::VectorXd solution;
   mutable double best_ = std::numeric_limits<double>::infinity(), mark_ = std::numeric_limits<double>::infinity();
   mutable int since_mark_ = 0;
+  mutable Eigen::VectorXd best_watched_, watch_mark_;
+  mutable double watch_mark_value_ = std::numeric_limits<double>::infinity();
+  mutable int since_watch_mark_ = 0;
 };
 
 // Adds the analytic Jacobian `jacobian(x, J)` (m x n) to a residual functor.
@@ -101,9 +122,7 @@ struct Residual_jacobian_functor : Residual_functor<ResidualFunction> {
 template <class Functor, class ResidualFunction>
 Minimizer_report run_levenberg_marquardt(Functor& functor, const ResidualFunction& residuals, int m,
                                          const Eigen::VectorXd& x0, const Minimizer_settings& settings) {
-  functor.absolute_value = settings.absolute_value;
-  functor.stall_tolerance = settings.stall_tolerance;
-  functor.stall_evaluations = settings.stall_evaluations;
+  functor.settings = settings;
   Eigen::LevenbergMarquardt<Functor> lm(functor);
   lm.parameters.ftol = settings.tolerance;
   lm.parameters.xtol = settings.tolerance;
