@@ -323,4 +323,29 @@ MLS_TEST(chaining_finds_a_junction_corner_without_apex) {
   }
 }
 
+// The separation test behind `Feature_options::minimum_separation` (units of h = 1): two
+// creases meeting at a corner at 90 degrees are not too close (their vertices near the shared
+// corner do not count), but they are when the corner is not shared; a parallel polyline 0.3
+// away is too close for a separation of 0.5 and not for 0.25, and so is a short segment running
+// 0.3 from the middle of a long one (no vertex of the long one near it), in either order.
+MLS_TEST(separation_of_polylines) {
+  namespace I = CGAL::MLS::internal;
+  std::vector<I::Feature_vec> a, b, c, d;
+  for(int i = 0; i <= 10; ++i) {
+    a.emplace_back(0.5 * i, 0, 0);
+    b.emplace_back(0, 0.5 * i, 0);
+    c.emplace_back(0.5 * i, 0.3, 0);
+  }
+  const std::vector<I::Feature_vec> long_one{I::Feature_vec::Zero(), I::Feature_vec(5, 0, 0)};
+  d = {I::Feature_vec(2.4, 0, 0.3), I::Feature_vec(2.6, 0, 0.3)};
+  const std::vector<I::Feature_vec> corner{I::Feature_vec::Zero()}, none;
+  MLS_CHECK(!I::polylines_come_closer(a, b, 0.5, corner));
+  MLS_CHECK(I::polylines_come_closer(a, b, 0.5, none));
+  MLS_CHECK(I::polylines_come_closer(a, c, 0.5, none));
+  MLS_CHECK(!I::polylines_come_closer(a, c, 0.25, none));
+  MLS_CHECK(I::polylines_come_closer(long_one, d, 0.5, none));
+  MLS_CHECK(I::polylines_come_closer(d, long_one, 0.5, none));
+  MLS_CHECK(!I::polylines_come_closer(long_one, d, 0.25, none));
+}
+
 int main(int argc, char** argv) { return mls_test::run_all(argc, argv); }

@@ -84,6 +84,10 @@ struct Meshing_report {
   /// @}
   /// Points projected by the feature detection (helper points and polyline vertices).
   std::size_t feature_queries = 0;
+  /// Mesh_3 failed with the feature polylines (a CGAL error, e.g. on polylines too close to each
+  /// other that `detect_sharp_features()` did not separate): the mesh was made without them, so
+  /// no feature is protected.
+  bool features_dropped = false;
   /// The criteria used.
   /// @{
   double facet_size = 0, facet_distance = 0;

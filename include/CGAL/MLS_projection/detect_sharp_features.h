@@ -43,6 +43,7 @@ struct Sharp_features {
     std::size_t crease_nodes = 0;   ///< crease clusters (graph vertices besides the corners)
     std::size_t junction_corners = 0; ///< corners found where three branches or more meet, not at an apex point
     std::size_t dropped_polylines = 0; ///< polylines dropped as too short
+    std::size_t too_close_polylines = 0; ///< polylines dropped as too close to a longer one (`minimum_separation`)
     std::size_t relaxation_queries = 0; ///< polyline vertices projected back onto the crease
     std::size_t relaxed = 0;        ///< of which landed on a crease and were moved
   } statistics; ///< what the detection did
@@ -104,6 +105,11 @@ struct Feature_options {
   double relaxation_tolerance = 0.5;
   /// Polylines shorter than this are dropped, unless both their ends are corners.
   double minimum_polyline_length = 2.0;
+  /// Two polylines may come no closer than this to each other, away from the corners where both
+  /// end: otherwise the shorter one is dropped. Mesh_3 protects each polyline with balls that
+  /// must not overlap the balls of another one, and fails ("already inserted on surface") on
+  /// polylines nearly touching, e.g. two fragments of a strongly curved crease found side by side.
+  double minimum_separation = 0.5;
 };
 
 namespace internal {
@@ -404,6 +410,42 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
     if(!p.allFinite() || (p - x).norm() > options.relaxation_tolerance * h) continue;
     x = p;
     ++out.statistics.relaxed;
+  }
+
+  // 7. separation: the longest polylines first; a polyline closer than `minimum_separation` to
+  // one kept before, away from the corners where both end, is dropped.
+  {
+    std::vector<std::size_t> order(lines.size());
+    std::vector<double> length(lines.size());
+    for(std::size_t l = 0; l < lines.size(); ++l) {
+      order[l] = l;
+      length[l] = internal::polyline_length(lines[l].points);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length[a] > length[b]; });
+    std::vector<bool> keep(lines.size(), false);
+    std::vector<std::size_t> kept;
+    for(std::size_t l : order) {
+      bool too_close = false;
+      for(std::size_t k : kept) {
+        std::vector<V> shared;
+        for(std::size_t end : {lines[l].front, lines[l].back})
+          if(end >= first_corner && (end == lines[k].front || end == lines[k].back)) shared.push_back(position(end));
+        if(internal::polylines_come_closer(lines[l].points, lines[k].points, options.minimum_separation * h, shared)) {
+          too_close = true;
+          break;
+        }
+      }
+      if(too_close) {
+        ++out.statistics.too_close_polylines;
+        continue;
+      }
+      keep[l] = true;
+      kept.push_back(l);
+    }
+    std::vector<Line> separated;
+    for(std::size_t l = 0; l < lines.size(); ++l)
+      if(keep[l]) separated.push_back(std::move(lines[l]));
+    lines = std::move(separated);
   }
 
   // output: corners as the same Point_3 in every polyline; corners with two ends or more listed

@@ -259,6 +259,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
       r = internal::mesh_with_surface_mesher(in, mesh);
     out.seconds_meshing = since(t_meshing);
     out.evaluations = r.evaluations;
+    out.features_dropped = r.features_dropped;
     if(!r.success) return fail(r.cancelled ? "cancelled" : r.message);
     if(!report("output", 0.98, 1., 1.)) return fail("cancelled");
     return true;

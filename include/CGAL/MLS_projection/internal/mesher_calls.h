@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -75,6 +76,8 @@ struct Mesher_input {
 struct Mesher_report {
   bool success = false;
   bool cancelled = false;
+  /// Mesh_3 failed with the polylines and the mesh was made without them.
+  bool features_dropped = false;
   std::size_t evaluations = 0;
   const char* message = "";
 };
@@ -147,6 +150,19 @@ private:
   std::vector<std::pair<Point_3, Point_3>> probes_;
 };
 
+// Mesh_3's complex, as a type of this namespace: when Mesh_3 fails on an error (e.g. "already
+// inserted on surface"), CGAL 5.5's Refine_facets_3 first writes the complex to dump-bug.* files
+// in the working directory through an unqualified call `dump_c3t3(c3t3, prefix)`; argument-
+// dependent lookup then also finds the overload below, more specialised than CGAL's, which
+// writes nothing (the error itself is caught by `mesh_with_mesh_3`).
+template <class Tr, class CornerIndex, class CurveIndex>
+struct Mesh_complex : Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex> {
+  using Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>::Mesh_complex_3_in_triangulation_3;
+};
+
+template <class Tr, class CornerIndex, class CurveIndex>
+void dump_c3t3(const Mesh_complex<Tr, CornerIndex, CurveIndex>&, std::string) {}
+
 template <class PolygonMesh>
 bool has_finite_vertices(const PolygonMesh& mesh) {
   const auto vpm = get(CGAL::vertex_point, mesh);
@@ -164,7 +180,9 @@ bool has_finite_vertices(const PolygonMesh& mesh) {
 /// size and distance (edge size along the polylines), no cell criteria, no perturbation nor
 /// exudation (only the surface is kept), `manifold()`; the surface facets are written to `mesh`
 /// with `facets_in_complex_3_to_triangle_mesh`. `CGAL::Parallel_tag` runs the parallel Mesh_3
-/// (TBB). On failure or cancellation, `mesh` is cleared.
+/// (TBB). When Mesh_3 fails with the polylines (a CGAL error, e.g. on polylines too close to each
+/// other), it meshes again without them and says so in `features_dropped`. On failure or
+/// cancellation, `mesh` is cleared.
 template <class ConcurrencyTag, class GeomTraits, class PolygonMesh>
 Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& mesh) {
 #ifndef CGAL_LINKED_WITH_TBB
@@ -174,7 +192,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   using Labeled = Labeled_mesh_domain_3<GeomTraits>;
   using Domain = Probed_implicit_domain<GeomTraits>;
   using Tr = typename Mesh_triangulation_3<Domain, Default, ConcurrencyTag>::type;
-  using C3t3 = Mesh_complex_3_in_triangulation_3<Tr, typename Domain::Corner_index, typename Domain::Curve_index>;
+  using C3t3 = Mesh_complex<Tr, typename Domain::Corner_index, typename Domain::Curve_index>;
   using Criteria = Mesh_criteria_3<Tr>;
   using Point_3 = typename GeomTraits::Point_3;
   namespace params = CGAL::parameters;
@@ -189,6 +207,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
                                                      params::relative_error_bound = in.relative_error_bound),
                 in.probes);
+  const Domain plain_domain = domain;
   bool has_features = false;
   if(!in.polylines.empty()) {
     std::vector<std::vector<Point_3>> polylines;
@@ -204,11 +223,17 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
                     params::facet_size = in.facet_size, params::facet_distance = in.facet_distance);
   C3t3 c3t3;
   const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
-  if(has_features)
-    c3t3 = make_mesh_3<C3t3>(domain, criteria, params::features(domain), params::no_perturb(), params::no_exude(),
-                             params::manifold(), options);
-  else
-    c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
+  if(has_features) {
+    try {
+      c3t3 = make_mesh_3<C3t3>(domain, criteria, params::features(domain), params::no_perturb(), params::no_exude(),
+                               params::manifold(), options);
+    } catch(const Failure_exception&) {
+      report.features_dropped = true;
+      has_features = false;
+    }
+  }
+  if(!has_features)
+    c3t3 = make_mesh_3<C3t3>(plain_domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
   report.evaluations = monitor.count.load();
   if(monitor.stop.load()) {

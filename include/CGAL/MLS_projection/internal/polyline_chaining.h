@@ -331,6 +331,39 @@ inline double polyline_length(const std::vector<Feature_vec>& p) {
   return L;
 }
 
+// The distance from `x` to the polyline `p`.
+inline double distance_to_polyline(const Feature_vec& x, const std::vector<Feature_vec>& p) {
+  double d = std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    d = (std::min)(d, (x - p[i]).norm());
+    if(i == 0) continue;
+    const Feature_vec e = p[i] - p[i - 1];
+    const double l2 = e.squaredNorm();
+    if(!(l2 > 0)) continue;
+    const double t = (x - p[i - 1]).dot(e) / l2;
+    if(t > 0 && t < 1) d = (std::min)(d, (x - (p[i - 1] + t * e)).norm());
+  }
+  return d;
+}
+
+// Whether a vertex of `a` lies closer than `distance` to `b`, or a vertex of `b` to `a`, not
+// counting the vertices within `distance` of a point of `shared` (the corners where both end).
+inline bool polylines_come_closer(const std::vector<Feature_vec>& a, const std::vector<Feature_vec>& b, double distance,
+                                  const std::vector<Feature_vec>& shared) {
+  const auto near_shared = [&](const Feature_vec& x) {
+    for(const Feature_vec& c : shared)
+      if((x - c).norm() < distance) return true;
+    return false;
+  };
+  for(int pass = 0; pass < 2; ++pass) {
+    const auto& from = pass == 0 ? a : b;
+    const auto& to = pass == 0 ? b : a;
+    for(const Feature_vec& x : from)
+      if(!near_shared(x) && distance_to_polyline(x, to) < distance) return true;
+  }
+  return false;
+}
+
 // `p` resampled at equal arc lengths, about `spacing` apart (at least one segment); the
 // endpoints are kept exactly.
 inline std::vector<Feature_vec> resample_polyline(const std::vector<Feature_vec>& p, double spacing) {
