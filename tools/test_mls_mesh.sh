@@ -196,6 +196,12 @@ group_meshing() {
     else
       fail "box, defaults" "not unified/mixed with features: $ERR"
     fi
+    # Determinism with the feature detection: one thread gives the same mesh, byte for byte.
+    run --input box.pwn --output box1.off --quiet --threads 1
+    if check_mesh "box, defaults, 1 thread" "$DIR/box1.off"; then
+      cmp -s "$DIR/box.off" "$DIR/box1.off" && pass "box, defaults: 1 thread and all threads byte-identical" ||
+        fail "box, defaults, 1 thread" "the mesh differs from the one of all threads"
+    fi
   fi
   # Replacing an existing output.
   echo "old content" >"$DIR/replace.off"
