@@ -19,9 +19,9 @@
 #endif
 
 #include <atomic>
-#include <cstring>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <set>
