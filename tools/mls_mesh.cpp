@@ -82,6 +82,7 @@ struct Settings {
   double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
   int threads = 0; // 0: all
+  bool parallel_mesher = false;
   bool quiet = false;
 };
 
@@ -124,6 +125,9 @@ mls_tools::Argument_parser make_parser(Settings& s) {
              [&s](const std::string& v) { s.bandwidth = mls_tools::parse_positive_double("--h", v); });
   parser.add("--threads", "N", "use at most N threads, N >= 1 (default: all cores)",
              [&s](const std::string& v) { s.threads = mls_tools::parse_positive_int("--threads", v, 4096); });
+  parser.add_flag("--parallel-mesher",
+                  "mesh3 refines in parallel too: faster on large meshes, but the mesh then depends on the threads' scheduling",
+                  [&s] { s.parallel_mesher = true; });
   parser.add_flag("--quiet", "no progress bar, only the final summary line", [&s] { s.quiet = true; });
   return parser;
 }
@@ -133,7 +137,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
        "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
-       "                [--h H] [--threads N] [--quiet]\n"
+       "                [--h H] [--threads N] [--parallel-mesher] [--quiet]\n"
        "\n"
        "Meshes the moving-least-squares (MLS) surface of a 3D point set into a closed, manifold\n"
        "triangle mesh (OFF), with CGAL's Mesh_3 or Surface_mesher.\n"
@@ -156,6 +160,10 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "feature detection's points) are projected with levin first, and only those whose quadratic\n"
        "fit leaves a residual above R h (--screening-residual, default 0.01) go to the unified\n"
        "operator: the creases and corners. --screening off projects every seed with the operator.\n"
+       "\n"
+       "Threads: the normals, the seeds and the features are computed in parallel (--threads), and\n"
+       "the mesh is the same, byte for byte, for any number of threads. Mesh_3's own refinement is\n"
+       "sequential unless --parallel-mesher is given; its output then varies from run to run.\n"
        "\n"
        "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6, .ply and .off\n"
        "give their vertices (normals when present). Without normals, normals are estimated and\n"
@@ -259,6 +267,7 @@ int run(int argc, char** argv) {
   options.space = choose_space(s);
   options.mesher = s.mesher;
   options.features = s.features;
+  options.parallel_mesher = s.parallel_mesher;
   options.facet_size = s.size;
   options.facet_distance = s.distance;
   options.bandwidth = s.bandwidth;

@@ -196,6 +196,12 @@ group_meshing() {
     else
       fail "box, defaults" "not unified/mixed with features: $ERR"
     fi
+    # Determinism with the feature detection: one thread gives the same mesh, byte for byte.
+    run --input box.pwn --output box1.off --quiet --threads 1
+    if check_mesh "box, defaults, 1 thread" "$DIR/box1.off"; then
+      cmp -s "$DIR/box.off" "$DIR/box1.off" && pass "box, defaults: 1 thread and all threads byte-identical" ||
+        fail "box, defaults, 1 thread" "the mesh differs from the one of all threads"
+    fi
   fi
   # Replacing an existing output.
   echo "old content" >"$DIR/replace.off"
@@ -231,6 +237,16 @@ group_meshing() {
     awk -v e="$e" 'BEGIN { exit !(e < 2e-2) }' && pass "sphere without normals, mesh3, levin: relative distance $e; $(tail -n 1 "$TMP/stderr")" ||
       fail "sphere without normals, mesh3" "relative distance to the sphere $e >= 2e-2"
   fi
+  # Determinism: one thread gives the same mesh, byte for byte, as all threads (the parallel
+  # normals and seeds, the sequential Mesh_3); --parallel-mesher gives a valid mesh.
+  run --input s.xyz --output s3t1.off --operator levin --quiet --threads 1
+  if check_mesh "sphere without normals, 1 thread" "$DIR/s3t1.off"; then
+    cmp -s "$DIR/s3.off" "$DIR/s3t1.off" && pass "sphere without normals: 1 thread and all threads byte-identical" ||
+      fail "sphere without normals, 1 thread" "the mesh differs from the one of all threads"
+  fi
+  run --input s.xyz --output s3p.off --operator levin --quiet --parallel-mesher
+  check_mesh "sphere without normals, --parallel-mesher" "$DIR/s3p.off" &&
+    pass "sphere without normals, --parallel-mesher: $(tail -n 1 "$TMP/stderr")"
 }
 
 for g in "${SELECTED[@]}"; do

@@ -14,9 +14,14 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <set>
@@ -187,16 +192,61 @@ MLS_TEST(torus_mesh3_closed_manifold_accurate) {
 #ifdef CGAL_LINKED_WITH_TBB
 // The parallel Mesh_3 (and the parallel normal estimation and seed projection): a valid mesh
 // with the same guarantees as the sequential one (the meshes differ: the parallel refinement
-// order is not deterministic).
+// order is not deterministic, hence the option `parallel_mesher`, off by default).
 MLS_TEST(sphere_parallel_mesh3_valid) {
   const auto p = sphere_points(2000);
   const double h = derived_h(p);
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_tag>(p, m, levin_options()));
+  Options o = levin_options();
+  o.parallel_mesher = true;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_tag>(p, m, o));
   const Mesh_check c = check_mesh(m, sphere_distance);
   print("sphere, parallel Mesh_3", c, seconds_since(t0), h);
   check_closed_mesh(c, 2, 0.02 * h);
+}
+
+// The vertex coordinates (bitwise) and the faces (vertex indices) of a mesh.
+struct Mesh_dump {
+  std::vector<double> coordinates;
+  std::vector<std::size_t> faces;
+  bool operator==(const Mesh_dump& o) const {
+    return faces == o.faces && coordinates.size() == o.coordinates.size() &&
+           std::memcmp(coordinates.data(), o.coordinates.data(), coordinates.size() * sizeof(double)) == 0;
+  }
+};
+
+/// mls_surface_reconstruction with `tag` and at most `threads` TBB threads.
+template <class Tag>
+Mesh_dump mesh_with_threads(const std::vector<Point>& p, const Options& options, int threads) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  Mesh m;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<Tag>(p, m, options));
+  Mesh_dump d;
+  for(auto v : vertices(m))
+    for(int i = 0; i < 3; ++i) d.coordinates.push_back(m.point(v)[i]);
+  for(auto f : faces(m))
+    for(auto v : vertices_around_face(halfedge(f, m), m)) d.faces.push_back(std::size_t(v));
+  MLS_CHECK(num_faces(m) > 100);
+  return d;
+}
+
+// Determinism (issue 6): without normals (the parallel normal estimation), the parallel seed
+// projection and the default sequential Mesh_3, the mesh is bit-identical with Sequential_tag,
+// with Parallel_tag on 1 and 2 threads, and across runs.
+MLS_TEST(meshing_determinism_threads) {
+  const auto p = sphere_points(1500);
+  const Options o = levin_options();
+  const auto t0 = std::chrono::steady_clock::now();
+  const Mesh_dump sequential = mesh_with_threads<CGAL::Sequential_tag>(p, o, 2);
+  const Mesh_dump one = mesh_with_threads<CGAL::Parallel_tag>(p, o, 1);
+  const Mesh_dump two = mesh_with_threads<CGAL::Parallel_tag>(p, o, 2);
+  const Mesh_dump again = mesh_with_threads<CGAL::Parallel_tag>(p, o, 2);
+  std::cout << "  " << sequential.coordinates.size() / 3 << " vertices, " << sequential.faces.size() / 3
+            << " faces, 4 runs, " << seconds_since(t0) << " s" << std::endl;
+  MLS_CHECK_MSG(sequential == one, "Sequential_tag and 1 thread differ");
+  MLS_CHECK_MSG(one == two, "1 and 2 threads differ");
+  MLS_CHECK_MSG(two == again, "two runs on 2 threads differ");
 }
 #endif
 

@@ -118,7 +118,7 @@ struct Meshing_options {
   };
   /// The mesher.
   enum class Mesher {
-    MESH_3,        ///< CGAL's Mesh_3 (`make_mesh_3` on a `Labeled_mesh_domain_3`), manifold output; parallel with `Parallel_tag`
+    MESH_3,        ///< CGAL's Mesh_3 (`make_mesh_3` on a `Labeled_mesh_domain_3`), manifold output; parallel with `Parallel_tag` and `parallel_mesher`
     SURFACE_MESHER ///< CGAL's Surface_mesher (`make_surface_mesh` on an `Implicit_surface_3`), sequential, no feature protection
   };
 
@@ -128,6 +128,12 @@ struct Meshing_options {
   Space space = Space::MIXED;
   /// The mesher (default `MESH_3`).
   Mesher mesher = Mesher::MESH_3;
+  /// Run Mesh_3's own refinement in parallel when `mls_surface_reconstruction()` is called with
+  /// `CGAL::Parallel_tag` (default `false`: Mesh_3 refines sequentially, the other stages are
+  /// parallel). Faster on large meshes, but the output mesh then depends on the scheduling of
+  /// the threads: it differs from run to run and with the number of threads. Without it, the
+  /// output is bit-identical for any number of threads and across runs.
+  bool parallel_mesher = false;
   /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
   bool features = true;
   /// The facet size criterion; 0: 2 times the average spacing of the input.

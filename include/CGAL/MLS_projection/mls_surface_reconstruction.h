@@ -95,7 +95,10 @@ bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radi
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`: the normal estimation, the projection of the
-///         seeds and Mesh_3 run in parallel (Surface_mesher is always sequential)
+///         seeds and the feature detection run in parallel, with results that do not depend on
+///         the number of threads; Mesh_3 too when `options.parallel_mesher` is set (its output
+///         then depends on the threads' scheduling). Surface_mesher is always sequential. By
+///         default the output is bit-identical for any tag, any number of threads and across runs.
 /// \tparam PointRange a range of points (read through `point_map`)
 /// \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `CGAL::Surface_mesh`)
 /// \param points the input samples; points with a non-finite coordinate are ignored
@@ -253,8 +256,12 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     const auto t_meshing = Clock::now();
     if(!report("meshing", 0.6, 0.98, 0.)) return fail("cancelled");
     internal::Mesher_report r;
-    if(options.mesher == Meshing_options::Mesher::MESH_3)
+    // Mesh_3's parallel refinement is not deterministic (the order of the insertions follows
+    // the threads' scheduling): opt-in only.
+    if(options.mesher == Meshing_options::Mesher::MESH_3 && options.parallel_mesher)
       r = internal::mesh_with_mesh_3<ConcurrencyTag>(in, mesh);
+    else if(options.mesher == Meshing_options::Mesher::MESH_3)
+      r = internal::mesh_with_mesh_3<Sequential_tag>(in, mesh);
     else
       r = internal::mesh_with_surface_mesher(in, mesh);
     out.seconds_meshing = since(t_meshing);
