@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -207,17 +208,16 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
                                                      params::relative_error_bound = in.relative_error_bound),
                 in.probes);
-  const Domain plain_domain = domain;
-  bool has_features = false;
-  if(!in.polylines.empty()) {
-    std::vector<std::vector<Point_3>> polylines;
-    for(const auto& l : in.polylines)
-      if(l.size() >= 2) polylines.push_back(l);
-    if(!polylines.empty()) {
-      domain.add_features(polylines.begin(), polylines.end());
-      has_features = true;
-    }
+  // the domain with the polylines, when there are any (`domain` stays without: the fall-back)
+  std::optional<Domain> featured;
+  std::vector<std::vector<Point_3>> polylines;
+  for(const auto& l : in.polylines)
+    if(l.size() >= 2) polylines.push_back(l);
+  if(!polylines.empty()) {
+    featured.emplace(domain);
+    featured->add_features(polylines.begin(), polylines.end());
   }
+  bool has_features = featured.has_value();
   const double edge_size = in.edge_size > 0 ? in.edge_size : in.facet_size;
   Criteria criteria(params::edge_size = edge_size, params::facet_angle = in.facet_angle,
                     params::facet_size = in.facet_size, params::facet_distance = in.facet_distance);
@@ -225,7 +225,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
   if(has_features) {
     try {
-      c3t3 = make_mesh_3<C3t3>(domain, criteria, params::features(domain), params::no_perturb(), params::no_exude(),
+      c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
                                params::manifold(), options);
     } catch(const Failure_exception&) {
       report.features_dropped = true;
@@ -233,7 +233,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
     }
   }
   if(!has_features)
-    c3t3 = make_mesh_3<C3t3>(plain_domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
+    c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
   report.evaluations = monitor.count.load();
   if(monitor.stop.load()) {
