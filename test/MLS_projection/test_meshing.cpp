@@ -160,6 +160,8 @@ MLS_TEST(sphere_mesh3_closed_manifold_accurate) {
             << ", meshing " << report.seconds_meshing << std::endl;
   MLS_CHECK(std::string(report.failure).empty());
   MLS_CHECK(report.seeds > 500 && report.failed_seeds == 0 && report.normals_by_fallback == 0);
+  // the default evaluation limit (100 times the expected number) is 20 times what this run needs
+  MLS_CHECK(report.max_evaluations >= 1000000 && report.evaluations * 20 < report.max_evaluations);
   check_closed_mesh(c, 2, 0.02 * h);
 }
 
@@ -487,6 +489,22 @@ MLS_TEST(cancellation) {
   MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(
     p, m, levin_options(), CGAL::parameters::callback(std::function<bool(double)>([&](double f) { last = f; return true; }))));
   MLS_CHECK_NEAR(last, 1., 1e-12);
+}
+
+// The evaluation limit stops both meshers: false, the reason, an empty mesh.
+MLS_TEST(evaluation_limit) {
+  const auto p = sphere_points(2000);
+  for(const auto mesher : {Options::Mesher::MESH_3, Options::Mesher::SURFACE_MESHER}) {
+    Mesh m;
+    CGAL::MLS::Meshing_report report;
+    Options o = levin_options(mesher);
+    o.max_evaluations = 5000;
+    o.report = &report;
+    MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, o));
+    MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
+    MLS_CHECK(std::string(report.failure).find("evaluation limit") != std::string::npos);
+    MLS_CHECK(report.max_evaluations == 5000 && report.evaluations > 5000);
+  }
 }
 
 // Bad input: a clear false, an empty mesh, no crash; non-finite points are ignored.

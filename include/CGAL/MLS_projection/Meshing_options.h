@@ -92,8 +92,9 @@ struct Meshing_report {
   /// @{
   double facet_size = 0, facet_distance = 0;
   /// @}
-  /// Evaluations of the implicit function by the mesher.
-  std::size_t evaluations = 0;
+  /// Evaluations of the implicit function by the mesher, and the limit it ran under (see
+  /// `Meshing_options::max_evaluations`).
+  std::size_t evaluations = 0, max_evaluations = 0;
   /// Wall-clock seconds of the stages.
   /// @{
   double seconds_normals = 0, seconds_seeds = 0, seconds_features = 0, seconds_meshing = 0;
@@ -144,6 +145,12 @@ struct Meshing_options {
   double facet_angle = 25;
   /// The bandwidth \f$h\f$ of the projection; 0: derived from the data (`Projection_options`).
   double bandwidth = 0;
+  /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the
+  /// evaluation limit"), after this many evaluations of the implicit function: a guard against a
+  /// refinement that does not end (Mesh_3 protecting polylines on an inconsistent function).
+  /// 0 (default): 100 times the expected number, \f$250\,n\,(s/\mathrm{size})^2\f$ for \f$n\f$
+  /// points of average spacing \f$s\f$, at least \f$10^6\f$ (a normal run uses 1 to 5 times it).
+  std::size_t max_evaluations = 0;
   /// The options of the implicit function (seeds, blending, normals).
   Implicit_function_options implicit_function;
   /// Called from the calling thread at the start of each stage ("normals", "seeds", "features",

@@ -250,6 +250,10 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     // samples of a sphere with the default size 2s: 250 n (s / size)^2
     const double s = spacing / in.facet_size;
     in.expected_evaluations = (std::max)(1e4, 250. * double(items.size()) * s * s);
+    in.max_evaluations = options.max_evaluations > 0
+                           ? options.max_evaluations
+                           : std::size_t((std::max)(1e6, 100. * in.expected_evaluations));
+    out.max_evaluations = in.max_evaluations;
     in.callback = slice("meshing", 0.6, 0.98);
     out.facet_size = in.facet_size;
     out.facet_distance = in.facet_distance;

@@ -71,12 +71,16 @@ struct Mesher_input {
   /// The expected number of evaluations, which sets the pace of the reported fraction
   /// \f$1 - e^{-n/\mathrm{expected}}\f$.
   double expected_evaluations = 1e6;
+  /// The mesher is stopped after this many evaluations (0: no limit): the run then fails.
+  std::size_t max_evaluations = 0;
 };
 
 /// What one mesher run did.
 struct Mesher_report {
   bool success = false;
   bool cancelled = false;
+  /// The mesher was stopped at `Mesher_input::max_evaluations`.
+  bool out_of_evaluations = false;
   /// Mesh_3 failed with the polylines and the mesh was made without them.
   bool features_dropped = false;
   std::size_t evaluations = 0;
@@ -92,8 +96,22 @@ struct Evaluation_monitor {
   std::thread::id caller = std::this_thread::get_id();
   const std::function<bool(double)>* callback = nullptr;
   double expected = 1e6;
+  std::size_t limit = 0;             // 0: none
+  std::atomic<bool> limit_hit{false};
   bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
 };
+
+// The report of a mesher stopped by the callback or by the evaluation limit.
+inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& report) {
+  if(monitor.limit_hit.load()) {
+    report.out_of_evaluations = true;
+    report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
+  } else {
+    report.cancelled = true;
+    report.message = "cancelled";
+  }
+  return report;
+}
 
 // The function with an evaluation counter and the cancellation poll.
 template <class GeomTraits, class Point = typename GeomTraits::Point_3>
@@ -104,6 +122,10 @@ struct Monitored_function {
 
   FT operator()(const Point& p) const {
     const std::size_t c = monitor->count.fetch_add(1, std::memory_order_relaxed) + 1;
+    if(monitor->limit > 0 && c > monitor->limit && !monitor->limit_hit.load(std::memory_order_relaxed)) {
+      monitor->limit_hit.store(true, std::memory_order_relaxed);
+      monitor->stop.store(true, std::memory_order_release);
+    }
     if((c & 1023) == 0 && monitor->callback && *monitor->callback && std::this_thread::get_id() == monitor->caller) {
       if(!(*monitor->callback)(1. - std::exp(-double(c) / monitor->expected)))
         monitor->stop.store(true, std::memory_order_release);
@@ -203,6 +225,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   Evaluation_monitor monitor;
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  monitor.limit = in.max_evaluations;
   const Monitored_function<GeomTraits> function{&in.function, &monitor};
 
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
@@ -236,11 +259,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
     c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
   report.evaluations = monitor.count.load();
-  if(monitor.stop.load()) {
-    report.cancelled = true;
-    report.message = "cancelled";
-    return report;
-  }
+  if(monitor.stop.load()) return stopped(monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
   if(!has_finite_vertices(mesh)) {
     clear(mesh);
@@ -272,6 +291,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   Evaluation_monitor monitor;
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  monitor.limit = in.max_evaluations;
   monitor.throw_on_stop = true;
   const Function function{&in.function, &monitor};
 
@@ -293,9 +313,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   } catch(const Meshing_cancelled&) {
     clear(mesh);
     report.evaluations = monitor.count.load();
-    report.cancelled = true;
-    report.message = "cancelled";
-    return report;
+    return stopped(monitor, report);
   }
   if(!has_finite_vertices(mesh)) {
     clear(mesh);
