@@ -81,6 +81,7 @@ struct Settings {
   bool screening = true;
   double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
+  double time_limit = 0; // 0: none
   int threads = 0; // 0: all
   bool parallel_mesher = false;
   bool quiet = false;
@@ -125,6 +126,8 @@ mls_tools::Argument_parser make_parser(Settings& s) {
              [&s](const std::string& v) { s.bandwidth = mls_tools::parse_positive_double("--h", v); });
   parser.add("--threads", "N", "use at most N threads, N >= 1 (default: all cores)",
              [&s](const std::string& v) { s.threads = mls_tools::parse_positive_int("--threads", v, 4096); });
+  parser.add("--time-limit", "T", "stop meshing (and fail) after T seconds of the mesher, > 0 (default: no limit)",
+             [&s](const std::string& v) { s.time_limit = mls_tools::parse_positive_double("--time-limit", v); });
   parser.add_flag("--parallel-mesher",
                   "mesh3 refines in parallel too: faster on large meshes, but the mesh then depends on the threads' scheduling",
                   [&s] { s.parallel_mesher = true; });
@@ -137,7 +140,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
        "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
-       "                [--h H] [--threads N] [--parallel-mesher] [--quiet]\n"
+       "                [--h H] [--threads N] [--time-limit T] [--parallel-mesher] [--quiet]\n"
        "\n"
        "Meshes the moving-least-squares (MLS) surface of a 3D point set into a closed, manifold\n"
        "triangle mesh (OFF), with CGAL's Mesh_3 or Surface_mesher.\n"
@@ -269,6 +272,7 @@ int run(int argc, char** argv) {
   options.features = s.features;
   options.parallel_mesher = s.parallel_mesher;
   options.facet_size = s.size;
+  options.max_meshing_seconds = s.time_limit;
   options.facet_distance = s.distance;
   options.bandwidth = s.bandwidth;
   options.implicit_function.levin_screening = s.screening;

@@ -139,6 +139,8 @@ group_errors() {
   expect_error "zero --size" 2 "--size|> 0" -- --input s.xyz --size 0
   expect_error "negative --distance" 2 "--distance|> 0" -- --input s.xyz --distance -0.1
   expect_error "NaN --size" 2 "--size|> 0" -- --input s.xyz --size nan
+  expect_error "zero --time-limit" 2 "--time-limit|> 0" -- --input s.xyz --time-limit 0
+  expect_error "time limit reached" 1 "time limit" -- --input s.xyz --operator levin --time-limit 0.000001
   expect_error "zero --threads" 2 "--threads|integer" -- --input s.xyz --threads 0
   expect_error "levin with the wedge space" 2 "levin|wedge|plane|quadratic" -- --input s.xyz --operator levin --space wedge
   expect_error "levin with the mixed space" 2 "levin|mixed" -- --input s.xyz --operator levin --space mixed

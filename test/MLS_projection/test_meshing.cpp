@@ -491,8 +491,8 @@ MLS_TEST(cancellation) {
   MLS_CHECK_NEAR(last, 1., 1e-12);
 }
 
-// The evaluation limit stops both meshers: false, the reason, an empty mesh.
-MLS_TEST(evaluation_limit) {
+// The evaluation and time limits stop both meshers: false, the reason, an empty mesh.
+MLS_TEST(evaluation_and_time_limits) {
   const auto p = sphere_points(2000);
   for(const auto mesher : {Options::Mesher::MESH_3, Options::Mesher::SURFACE_MESHER}) {
     Mesh m;
@@ -504,6 +504,12 @@ MLS_TEST(evaluation_limit) {
     MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
     MLS_CHECK(std::string(report.failure).find("evaluation limit") != std::string::npos);
     MLS_CHECK(report.max_evaluations == 5000 && report.evaluations > 5000);
+    // a microsecond: the watchdog fires before the mesher ends (about 0.3 s here)
+    o.max_evaluations = 0;
+    o.max_meshing_seconds = 1e-6;
+    MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, o));
+    MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
+    MLS_CHECK(std::string(report.failure).find("time limit") != std::string::npos);
   }
 }
 

@@ -146,11 +146,16 @@ struct Meshing_options {
   /// The bandwidth \f$h\f$ of the projection; 0: derived from the data (`Projection_options`).
   double bandwidth = 0;
   /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the
-  /// evaluation limit"), after this many evaluations of the implicit function: a guard against a
-  /// refinement that does not end (Mesh_3 protecting polylines on an inconsistent function).
-  /// 0 (default): 100 times the expected number, \f$250\,n\,(s/\mathrm{size})^2\f$ for \f$n\f$
-  /// points of average spacing \f$s\f$, at least \f$10^6\f$ (a normal run uses 1 to 5 times it).
+  /// evaluation limit"), after this many evaluations of the implicit function: a bound on the
+  /// work of a refinement that keeps evaluating without end. 0 (default): 100 times the expected
+  /// number, \f$250\,n\,(s/\mathrm{size})^2\f$ for \f$n\f$ points of average spacing \f$s\f$, at least
+  /// \f$10^6\f$ (normal runs use 1 to 2 times the expected number).
   std::size_t max_evaluations = 0;
+  /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the
+  /// time limit"), after this many seconds of meshing; 0 (default): no limit. Mesh_3's refinement
+  /// can also loop without evaluating the function (in its manifold facet refinement, see the
+  /// user manual), which `max_evaluations` does not see.
+  double max_meshing_seconds = 0;
   /// The options of the implicit function (seeds, blending, normals).
   Implicit_function_options implicit_function;
   /// Called from the calling thread at the start of each stage ("normals", "seeds", "features",

@@ -254,6 +254,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
                            ? options.max_evaluations
                            : std::size_t((std::max)(1e6, 100. * in.expected_evaluations));
     out.max_evaluations = in.max_evaluations;
+    in.max_seconds = options.max_meshing_seconds;
     in.callback = slice("meshing", 0.6, 0.98);
     out.facet_size = in.facet_size;
     out.facet_distance = in.facet_distance;

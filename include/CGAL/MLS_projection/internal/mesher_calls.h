@@ -29,9 +29,12 @@
 #include <CGAL/tags.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -73,14 +76,17 @@ struct Mesher_input {
   double expected_evaluations = 1e6;
   /// The mesher is stopped after this many evaluations (0: no limit): the run then fails.
   std::size_t max_evaluations = 0;
+  /// The mesher is stopped after this many seconds (0: no limit): the run then fails.
+  double max_seconds = 0;
 };
 
 /// What one mesher run did.
 struct Mesher_report {
   bool success = false;
   bool cancelled = false;
-  /// The mesher was stopped at `Mesher_input::max_evaluations`.
+  /// The mesher was stopped at `Mesher_input::max_evaluations` or `max_seconds`.
   bool out_of_evaluations = false;
+  bool out_of_time = false;
   /// Mesh_3 failed with the polylines and the mesh was made without them.
   bool features_dropped = false;
   std::size_t evaluations = 0;
@@ -98,6 +104,7 @@ struct Evaluation_monitor {
   double expected = 1e6;
   std::size_t limit = 0;             // 0: none
   std::atomic<bool> limit_hit{false};
+  std::atomic<bool> time_hit{false};
   bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
 };
 
@@ -106,12 +113,48 @@ inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& 
   if(monitor.limit_hit.load()) {
     report.out_of_evaluations = true;
     report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
+  } else if(monitor.time_hit.load()) {
+    report.out_of_time = true;
+    report.message = "the mesher did not finish within the time limit (Meshing_options::max_meshing_seconds)";
   } else {
     report.cancelled = true;
     report.message = "cancelled";
   }
   return report;
 }
+
+// Sets the monitor's stop flag after `seconds` (none when `seconds` is not positive), unless
+// destroyed before: the meshers poll the flag in their loops (Mesh_3's refinement may run long
+// without evaluating the function, e.g. in its manifold facet refinement).
+class Meshing_watchdog {
+public:
+  Meshing_watchdog(Evaluation_monitor& monitor, double seconds) {
+    if(!(seconds > 0) || !std::isfinite(seconds)) return;
+    thread_ = std::thread([this, &monitor, seconds] {
+      std::unique_lock<std::mutex> lock(mutex_);
+      if(!done_cv_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return done_; })) {
+        monitor.time_hit.store(true);
+        monitor.stop.store(true, std::memory_order_release);
+      }
+    });
+  }
+  ~Meshing_watchdog() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    done_cv_.notify_all();
+    if(thread_.joinable()) thread_.join();
+  }
+  Meshing_watchdog(const Meshing_watchdog&) = delete;
+  Meshing_watchdog& operator=(const Meshing_watchdog&) = delete;
+
+private:
+  std::mutex mutex_;
+  std::condition_variable done_cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
 
 // The function with an evaluation counter and the cancellation poll.
 template <class GeomTraits, class Point = typename GeomTraits::Point_3>
@@ -226,6 +269,8 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
+  std::optional<Meshing_watchdog> watchdog;
+  watchdog.emplace(monitor, in.max_seconds);
   const Monitored_function<GeomTraits> function{&in.function, &monitor};
 
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
@@ -258,6 +303,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   if(!has_features)
     c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
+  watchdog.reset();
   report.evaluations = monitor.count.load();
   if(monitor.stop.load()) return stopped(monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
@@ -292,6 +338,8 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
+  std::optional<Meshing_watchdog> watchdog;
+  watchdog.emplace(monitor, in.max_seconds);
   monitor.throw_on_stop = true;
   const Function function{&in.function, &monitor};
 
@@ -308,9 +356,11 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
     Surface surface(function, typename SGT::Sphere_3(inner, radius * radius), error);
     Surface_mesh_default_criteria_3<STr> criteria(in.facet_angle, in.facet_size, in.facet_distance);
     make_surface_mesh(c2t3, surface, criteria, Manifold_tag());
+    watchdog.reset();
     report.evaluations = monitor.count.load();
     facets_in_complex_2_to_triangle_mesh(c2t3, mesh);
   } catch(const Meshing_cancelled&) {
+    watchdog.reset();
     clear(mesh);
     report.evaluations = monitor.count.load();
     return stopped(monitor, report);
