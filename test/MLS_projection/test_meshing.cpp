@@ -491,46 +491,6 @@ MLS_TEST(cancellation) {
   MLS_CHECK_NEAR(last, 1., 1e-12);
 }
 
-// The far grid that signs the far value: samples every h/2 of the cube [-1, 1]^3's surface,
-// h = 0.1 (cells of h/2; a cell is near within h + half a diagonal = 0.143 of a sample). Points
-// 0.25 (2.5h) off the surface are classified, inside and outside, also beyond the edges and the
-// corner, where the nearest sample's normal is that of one face only; points on the surface are
-// not. An open surface (one face), or the cube with a hole of 6h in a face (the fill leaks in),
-// classifies nothing.
-MLS_TEST(far_grid_inside_outside) {
-  using V = CGAL::MLS::internal::Vec<3>;
-  const double h = 0.1;
-  const auto cube = [](double hole) {
-    std::vector<V> pts;
-    for(int face = 0; face < 6; ++face)
-      for(int i = 0; i <= 40; ++i)
-        for(int j = 0; j <= 40; ++j) {
-          const double u = -1 + 0.05 * i, v = -1 + 0.05 * j, w = face % 2 ? 1. : -1.;
-          if(face == 5 && std::abs(u) < hole / 2 && std::abs(v) < hole / 2) continue;
-          const int axis = face / 2;
-          V p;
-          p[axis] = w;
-          p[(axis + 1) % 3] = u;
-          p[(axis + 2) % 3] = v;
-          pts.push_back(p);
-        }
-    return pts;
-  };
-  CGAL::MLS::internal::Far_grid grid;
-  grid.build(cube(0.), h);
-  for(const V& x : {V(0, 0, 0), V(0.75, 0, 0), V(0.75, 0.75, 0.75), V(0, -0.75, 0.7)}) MLS_CHECK(grid.side_of(x) == -1);
-  for(const V& x : {V(1.25, 0, 0), V(1.2, 1.2, 0), V(1.05, 1.3, -0.3), V(1.2, 1.2, 1.2), V(0, 0, -1.25), V(10, 0, 0)})
-    MLS_CHECK(grid.side_of(x) == 1);
-  for(const V& x : {V(1, 0, 0), V(1, 1, 1), V(0.95, 0.3, 0)}) MLS_CHECK(grid.side_of(x) == 0);
-  std::vector<V> face;
-  for(const V& p : cube(0.))
-    if(p[2] == 1.) face.push_back(p);
-  grid.build(face, h);
-  MLS_CHECK(grid.side_of(V(0, 0, 0)) == 0 && grid.side_of(V(0, 0, 2)) == 0);
-  grid.build(cube(0.6), h);
-  MLS_CHECK(grid.side_of(V(0, 0, 0)) == 0 && grid.side_of(V(1.25, 0, 0)) == 0);
-}
-
 // The evaluation and time limits stop both meshers: false, the reason, an empty mesh.
 MLS_TEST(evaluation_and_time_limits) {
   const auto p = sphere_points(2000);

@@ -163,94 +163,6 @@ struct Seed_projection<Projection, false> {
   static constexpr bool screens = false;
 };
 
-/// Inside and outside away from a closed surface given by points on it, on a grid: the cells
-/// whose centre is within \f$h\f$ plus half a cell diagonal of a point are "near"; the others are
-/// "outside" when connected (through faces) to the grid's boundary, "inside" otherwise (a flood
-/// fill). Cells of \f$h/2\f$ (coarser when more than 200 per axis would be needed), a margin of
-/// two cells beyond the near ones. When no cell is inside (an open surface, or holes in the
-/// sampling wider than about \f$2h\f$ let the fill leak in), nothing is classified.
-struct Far_grid {
-  Vec<3> lo = Vec<3>::Zero();
-  double cell = 0;
-  std::array<std::ptrdiff_t, 3> n{{0, 0, 0}};
-  std::vector<std::int8_t> side; // +1 outside, -1 inside, 0 near (or unclassified)
-
-  /// +1 outside, -1 inside, 0 when not classified (near the surface, or no classification);
-  /// beyond the grid: outside.
-  int side_of(const Vec<3>& x) const {
-    if(side.empty()) return 0;
-    std::array<std::ptrdiff_t, 3> c;
-    for(int j = 0; j < 3; ++j) {
-      const double t = std::floor((x[j] - lo[j]) / cell);
-      if(!(t >= 0 && t < double(n[j]))) return 1;
-      c[j] = std::ptrdiff_t(t);
-    }
-    return side[std::size_t((c[2] * n[1] + c[1]) * n[0] + c[0])];
-  }
-
-  void build(const std::vector<Vec<3>>& points, double h) {
-    side.clear();
-    if(points.empty() || !(h > 0)) return;
-    Vec<3> a = points.front(), b = points.front();
-    for(const Vec<3>& p : points) {
-      a = a.cwiseMin(p);
-      b = b.cwiseMax(p);
-    }
-    cell = (std::max)(0.5 * h, (b - a).maxCoeff() / 200.);
-    const double reach = h + 0.5 * std::sqrt(3.) * cell; // near: a centre within this of a point
-    const double margin = reach + 2 * cell;
-    lo = a - Vec<3>::Constant(margin);
-    for(int j = 0; j < 3; ++j) n[j] = std::ptrdiff_t(std::ceil((b[j] - a[j] + 2 * margin) / cell));
-    const std::size_t total = std::size_t(n[0] * n[1] * n[2]);
-    std::vector<std::int8_t> s(total, 2); // 2: not visited
-    const auto index = [&](std::ptrdiff_t i, std::ptrdiff_t j, std::ptrdiff_t k) { return std::size_t((k * n[1] + j) * n[0] + i); };
-    // near cells
-    const std::ptrdiff_t r = std::ptrdiff_t(std::ceil(reach / cell)) + 1;
-    for(const Vec<3>& p : points) {
-      std::array<std::ptrdiff_t, 3> c;
-      for(int j = 0; j < 3; ++j) c[j] = std::ptrdiff_t(std::floor((p[j] - lo[j]) / cell));
-      for(std::ptrdiff_t k = (std::max<std::ptrdiff_t>)(0, c[2] - r); k <= (std::min)(n[2] - 1, c[2] + r); ++k)
-        for(std::ptrdiff_t j = (std::max<std::ptrdiff_t>)(0, c[1] - r); j <= (std::min)(n[1] - 1, c[1] + r); ++j)
-          for(std::ptrdiff_t i = (std::max<std::ptrdiff_t>)(0, c[0] - r); i <= (std::min)(n[0] - 1, c[0] + r); ++i) {
-            const Vec<3> centre = lo + cell * Vec<3>(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5);
-            if((centre - p).squaredNorm() <= reach * reach) s[index(i, j, k)] = 0;
-          }
-    }
-    // flood fill of the outside from the boundary cells
-    std::vector<std::size_t> stack;
-    const auto push = [&](std::ptrdiff_t i, std::ptrdiff_t j, std::ptrdiff_t k) {
-      if(i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) return;
-      const std::size_t q = index(i, j, k);
-      if(s[q] != 2) return;
-      s[q] = 1;
-      stack.push_back(q);
-    };
-    for(std::ptrdiff_t k = 0; k < n[2]; ++k)
-      for(std::ptrdiff_t j = 0; j < n[1]; ++j)
-        for(std::ptrdiff_t i = 0; i < n[0]; ++i)
-          if(i == 0 || j == 0 || k == 0 || i == n[0] - 1 || j == n[1] - 1 || k == n[2] - 1) push(i, j, k);
-    while(!stack.empty()) {
-      const std::size_t q = stack.back();
-      stack.pop_back();
-      const std::ptrdiff_t i = std::ptrdiff_t(q % std::size_t(n[0])), j = std::ptrdiff_t((q / std::size_t(n[0])) % std::size_t(n[1])),
-                           k = std::ptrdiff_t(q / std::size_t(n[0] * n[1]));
-      push(i - 1, j, k);
-      push(i + 1, j, k);
-      push(i, j - 1, k);
-      push(i, j + 1, k);
-      push(i, j, k - 1);
-      push(i, j, k + 1);
-    }
-    bool any_inside = false;
-    for(std::int8_t& v : s)
-      if(v == 2) {
-        v = -1;
-        any_inside = true;
-      }
-    if(any_inside) side = std::move(s);
-  }
-};
-
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionRef
@@ -297,10 +209,8 @@ struct Far_grid {
 /// \f$f\f$ is that member's exact signed distance. Far from the data, with \f$d\f$ the distance to
 /// the nearest seed and \f$\lambda\f$ a smooth step from 0 at \f$d\f$ = `far_start`\f$\cdot h\f$ to
 /// 1 at `far_end`\f$\cdot h\f$, \f$f = (1 - \lambda) f_{\mathrm{fit}} + \lambda\, f_{\mathrm{far}}\f$,
-/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ (not an extrapolated quadratic) signed by the seeds' far
-/// grid (`internal::Far_grid`: a flood fill of the outside on cells of \f$h/2\f$, the cells within
-/// \f$h\f$ of a seed left out), or, in the cells near the seeds, by the side of the nearest seed's
-/// tangent plane.
+/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the nearest seed's normal (cheap, the right sign
+/// for a closed surface, and not an extrapolated quadratic).
 ///
 /// <b>Evaluation, `EXACT`.</b> \f$f(x) = \pm|x - P(x)|\f$, \f$P\f$ the projection, the sign that of
 /// \f$(x - P(x))\cdot n\f$ with \f$n\f$ the result's normal oriented as above; where the projection
@@ -386,8 +296,9 @@ public:
       if(dist[j] < dist[nearest]) nearest = j;
       R = (std::max)(R, dist[j]);
     }
+    const Fit& near = d.fits[idx[nearest]];
     const double dmin = dist[nearest];
-    const double far = far_sign(d, d.fits[idx[nearest]], x) * dmin;
+    const double far = ((x - near.point).dot(near.normal) < 0 ? -1. : 1.) * dmin;
     const double lambda =
       internal::smoothstep((dmin - d.options.far_start * d.h) / ((d.options.far_end - d.options.far_start) * d.h));
     if(lambda >= 1. || m < 2) return far;
@@ -485,7 +396,6 @@ private:
     std::size_t operator_seeds = 0;
     double threshold = -1;
     internal::Oriented_normals_report normals_report;
-    internal::Far_grid far_grid;
     Sphere_3 sphere;
     Point_3 inner_point;
     Status status = Status::VALID;
@@ -512,15 +422,7 @@ private:
     d.seeds->k_nearest(x, 1, idx);
     if(idx.empty()) return 1.;
     const Fit& f = d.fits[idx[0]];
-    return far_sign(d, f, x) * (x - f.point).norm();
-  }
-
-  // The sign of the far value at `x` (seed-local): the side of its cell of the far grid when the
-  // cell is classified, else the side of the tangent plane of the nearest seed `f`.
-  static double far_sign(const Data& d, const Fit& f, const V& x) {
-    const int side = d.far_grid.side_of(x);
-    if(side != 0) return double(side);
-    return (x - f.point).dot(f.normal) < 0 ? -1. : 1.;
+    return ((x - f.point).dot(f.normal) < 0 ? -1. : 1.) * (x - f.point).norm();
   }
 
   // The sign of the sum of the dot products of `n` with the oriented normals of the 6 samples
@@ -655,13 +557,7 @@ private:
     CGAL_assertion(d.seeds->size() == fits.size());
     d.fits = std::move(fits);
 
-    // 5. the far grid (inside / outside away from the seeds), bounding sphere and inner point
-    {
-      std::vector<V> points;
-      points.reserve(d.fits.size());
-      for(const Fit& f : d.fits) points.push_back(f.point);
-      d.far_grid.build(points, d.h);
-    }
+    // 5. bounding sphere and inner point
     V lo = V::Constant(std::numeric_limits<double>::max()), hi = -lo;
     for(std::size_t i = 0; i < n; ++i) {
       lo = lo.cwiseMin(samples.local_point(i));

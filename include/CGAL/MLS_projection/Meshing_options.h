@@ -34,8 +34,7 @@ struct Implicit_function_options {
   /// The number of nearest seeds blended by the partition of unity (clamped to [2, 63]).
   int blend_neighbors = 8;
   /// Beyond this distance from the nearest seed (units of \f$h\f$), the value is blended
-  /// towards the far value (distance to the nearest seed, signed by the inside/outside grid, see
-  /// `MLS_implicit_function`)...
+  /// towards the far value (distance to the nearest seed, signed by its normal)...
   double far_start = 1.5;
   /// ... which it reaches at this distance (units of \f$h\f$).
   double far_end = 3.;

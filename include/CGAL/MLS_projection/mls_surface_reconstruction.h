@@ -220,11 +220,10 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     internal::Mesher_input<K> in;
     in.bounding_sphere = function.bounding_sphere();
     // The function, made positive outside the bounding sphere: max(f, |x - c| - R). Mesh_3 also
-    // evaluates points far outside it (the circumcentres of the initial triangulation's cells);
-    // when the far grid classifies nothing (see MLS_implicit_function), the far value there is
-    // signed by the nearest seed's normal and may change sign wherever two seeds with different
-    // normals are about equally far (e.g. on the axis of a bore, beyond the solid), which would
-    // grow spurious surface.
+    // evaluates points far outside it (the circumcentres of the initial triangulation's cells),
+    // where the far value, signed by the nearest seed's normal, may change sign wherever two
+    // seeds with different normals are about equally far (e.g. on the axis of a bore, beyond the
+    // solid), which would grow spurious surface there.
     const Point_3 centre = in.bounding_sphere.center();
     const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
     in.function = [function, centre, radius](const Point_3& p) {
