@@ -84,9 +84,6 @@ struct Mesher_input {
 struct Mesher_report {
   bool success = false;
   bool cancelled = false;
-  /// The mesher was stopped at `Mesher_input::max_evaluations` or `max_seconds`.
-  bool out_of_evaluations = false;
-  bool out_of_time = false;
   /// Mesh_3 failed with the polylines and the mesh was made without them.
   bool features_dropped = false;
   std::size_t evaluations = 0;
@@ -108,13 +105,11 @@ struct Evaluation_monitor {
   bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
 };
 
-// The report of a mesher stopped by the callback or by the evaluation limit.
+// The report of a mesher stopped by the callback, the evaluation limit or the time limit.
 inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& report) {
   if(monitor.limit_hit.load()) {
-    report.out_of_evaluations = true;
     report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
   } else if(monitor.time_hit.load()) {
-    report.out_of_time = true;
     report.message = "the mesher did not finish within the time limit (Meshing_options::max_meshing_seconds)";
   } else {
     report.cancelled = true;
