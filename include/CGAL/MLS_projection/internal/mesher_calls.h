@@ -160,7 +160,7 @@ struct Monitored_function {
 
   FT operator()(const Point& p) const {
     const std::size_t c = monitor->count.fetch_add(1, std::memory_order_relaxed) + 1;
-    if(monitor->limit > 0 && c > monitor->limit && !monitor->limit_hit.load(std::memory_order_relaxed)) {
+    if(c == monitor->limit + 1 && monitor->limit > 0) { // exactly one call sees it
       monitor->limit_hit.store(true, std::memory_order_relaxed);
       monitor->stop.store(true, std::memory_order_release);
     }
@@ -264,8 +264,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
-  std::optional<Meshing_watchdog> watchdog;
-  watchdog.emplace(monitor, in.max_seconds);
+  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds);
   const Monitored_function<GeomTraits> function{&in.function, &monitor};
 
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
@@ -333,8 +332,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
-  std::optional<Meshing_watchdog> watchdog;
-  watchdog.emplace(monitor, in.max_seconds);
+  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds);
   monitor.throw_on_stop = true;
   const Function function{&in.function, &monitor};
 
