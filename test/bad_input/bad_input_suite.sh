@@ -243,6 +243,20 @@ expect "malformed .ply (integer coordinates)" "error 1 int.ply|'x' is a int" --i
 { printf 'ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n'
   head -c 240 /dev/zero; } >"$DIR/huge_count.ply"
 expect "truncated .ply (declares 4e9 vertices)" "error 1 huge_count.ply|4000000000|truncated" --input huge_count.ply --output "$OUT"
+# CGAL's reader allocates a list's entries before reading them (3.4 GB on a fuzzer's input)
+{ printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n'
+  printf 'element face 1\nproperty list uint int vertex_indices\nend_header\n'
+  head -c 72 /dev/zero; printf '\x00\x28\x6b\xee\x01\x00\x00\x00'; } >"$DIR/huge_list.ply"
+expect "truncated .ply (a list of 4e9 entries, binary)" "error 1 huge_list.ply|face|4000000000 entries" --input huge_list.ply --output "$OUT"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n'
+  printf 'element face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n'; } >"$DIR/negative_list.ply"
+expect "malformed .ply (a negative list count)" "error 1 negative_list.ply|face|negative" --input negative_list.ply --output "$OUT"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n'
+  printf 'element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3.5 0 1 2\n'; } >"$DIR/fraction_list.ply"
+expect "malformed .ply (a list count 3.5)" "error 1 fraction_list.ply|'3.5' is not a whole number" --input fraction_list.ply --output "$OUT"
+{ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n'
+  printf 'element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'; } >"$DIR/list_cut.ply"
+expect "truncated .ply (ends before a list count)" "error 1 list_cut.ply|face|ends before the count" --input list_cut.ply --output "$OUT"
 printf 'ply\nformat ascii 1.0\nelement vertex 3\n' >"$DIR/header_only.ply"
 expect "truncated .ply (header only)" "error 1 header_only.ply|end_header" --input header_only.ply --output "$OUT"
 

@@ -24,6 +24,13 @@ struct Input_error : std::runtime_error {
   static constexpr int exit_code = 1;
 };
 
+namespace internal {
+
+/// `s` in single quotes, as the messages name files, options and values.
+inline std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+} // namespace internal
+
 } // namespace mls_tools
 
 #endif // MLS_TOOLS_ERRORS_H

@@ -16,6 +16,7 @@
 
 #include <mls_tools/arguments.h>
 #include <mls_tools/errors.h>
+#include <mls_tools/ply_check.h>
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
@@ -66,8 +67,6 @@ inline Point_format point_format(const std::string& path) {
 }
 
 namespace internal {
-
-inline std::string quote(const std::string& s) { return "'" + s + "'"; }
 
 /// Opens `path` for reading; refuses directories, missing and empty files.
 inline std::ifstream open_point_file(const std::string& path, std::ios::openmode mode = std::ios::in) {
@@ -173,122 +172,11 @@ inline long declared_off_vertices(const std::string& path) {
   return -1;
 }
 
-/// The size in bytes of a PLY scalar type (0 if unknown).
-inline std::size_t ply_type_size(const std::string& type) {
-  if(type == "char" || type == "int8" || type == "uchar" || type == "uint8") return 1;
-  if(type == "short" || type == "int16" || type == "ushort" || type == "uint16") return 2;
-  if(type == "int" || type == "int32" || type == "uint" || type == "uint32" || type == "float" || type == "float32") return 4;
-  if(type == "double" || type == "float64") return 8;
-  return 0;
-}
-
-/// Checks what CGAL 5.5's PLY reader does not, before it reads the file:
-///  - a `property` line before any `element` line makes it call back() on an empty vector
-///    (a segmentation fault, found by fuzz/fuzz_point_io.cpp);
-///  - a property name repeated in an element with another type, or vertex coordinates and normals
-///    that are not all float or all double, make it dereference a null pointer (found by the
-///    fuzzer too): both are refused;
-///  - it accepts a header without `end_header` (and returns its vertices at the origin);
-///  - several vertex elements trip one of its assertions;
-///  - it reserves memory for every declared item before reading any: an element count that the
-///    rest of the file cannot hold (at least 1 byte per property in ASCII, the sizes of the
-///    properties in binary) is refused here with a clear message.
-inline void check_ply_header(const std::string& path) {
-  std::ifstream is(path, std::ios::in | std::ios::binary);
-  struct Element {
-    std::string name;
-    unsigned long long count;
-    std::size_t ascii_bytes = 0, binary_bytes = 0; // the least bytes one item takes
-    std::vector<std::string> properties, types;
-  };
-  std::vector<Element> elements;
-  bool is_binary = false, has_end = false;
-  std::string line;
-  for(std::size_t line_number = 1; std::getline(is, line); ++line_number) {
-    std::istringstream iss(line);
-    std::string keyword;
-    iss >> keyword;
-    if(line_number == 1) {
-      if(keyword != "ply") return; // not a PLY file: CGAL's reader says so
-      continue;
-    }
-    if(line_number == 2) {         // "format <ascii|binary_*> 1.0", checked by CGAL
-      std::string format;
-      iss >> format;
-      is_binary = format.rfind("binary", 0) == 0;
-      continue;
-    }
-    const std::string where = quote(path) + ", line " + std::to_string(line_number) + " of the PLY header: ";
-    if(keyword == "end_header") {
-      has_end = true;
-      break;
-    } else if(keyword == "element") {
-      Element e;
-      if(iss >> e.name >> e.count) elements.push_back(e);
-    } else if(keyword == "property") {
-      if(elements.empty()) throw Input_error(where + "a property before any element");
-      std::string type, count_type, index_type, name;
-      iss >> type;
-      if(type == "list") iss >> count_type >> index_type; // a list may be empty: its count only
-      iss >> name;
-      auto& names = elements.back().properties;
-      if(std::find(names.begin(), names.end(), name) != names.end())
-        throw Input_error(where + "property " + quote(name) + " appears twice in element " + quote(elements.back().name));
-      names.push_back(name);
-      elements.back().types.push_back(type == "float32" ? "float" : type == "float64" ? "double" : type);
-      elements.back().ascii_bytes += 1;
-      elements.back().binary_bytes += ply_type_size(type == "list" ? count_type : type);
-    }
-  }
-  // CGAL's reader accepts a header cut before end_header, and returns its vertices at the origin
-  if(!has_end) throw Input_error(quote(path) + ": the PLY header has no end_header line (truncated file?)");
-  // several vertex elements, with different property types, trip an assertion of CGAL's reader
-  // (found by the fuzzer)
-  if(std::count_if(elements.begin(), elements.end(), [](const Element& e) { return e.name == "vertex" || e.name == "vertices"; }) > 1)
-    throw Input_error(quote(path) + ": the PLY header declares more than one vertex element");
-  for(const Element& e : elements) {
-    if(e.name != "vertex" && e.name != "vertices") continue;
-    // CGAL reads x, y, z (and nx, ny, nz when all three exist) all as float if one of x, y, z is
-    // a float, else all as double, and dereferences a null pointer when one has another type
-    const auto type_of = [&e](const char* name) -> std::string {
-      const auto it = std::find(e.properties.begin(), e.properties.end(), name);
-      return it == e.properties.end() ? std::string() : e.types[std::size_t(it - e.properties.begin())];
-    };
-    std::vector<const char*> names = {"x", "y", "z"};
-    if(!type_of("nx").empty() && !type_of("ny").empty() && !type_of("nz").empty())
-      names.insert(names.end(), {"nx", "ny", "nz"});
-    bool has_float = false;
-    for(const char* n : {"x", "y", "z"}) has_float = has_float || type_of(n) == "float";
-    const std::string expected = has_float ? "float" : "double";
-    for(const char* n : names) {
-      const std::string t = type_of(n);
-      if(!t.empty() && t != expected)
-        throw Input_error(quote(path) + ": the PLY vertex property " + quote(n) + " is a " + t + ", but x, y, z" +
-                          (names.size() > 3 ? ", nx, ny, nz" : "") + " must all be float or all double");
-    }
-  }
-  const auto header_end = is.tellg();
-  std::error_code ec;
-  const auto file_size = std::filesystem::file_size(path, ec);
-  if(ec || header_end < 0) return;
-  const long double available = (long double)(file_size) - (long double)(header_end);
-  long double needed = 0;
-  for(const Element& e : elements) {
-    // at least 1 byte per item: CGAL loops over the items of an element without properties too
-    // (a count of -7 read as 2^64 - 7 hung it, found by the fuzzer)
-    needed += (long double)(e.count) * (long double)(std::max<std::size_t>(1, is_binary ? e.binary_bytes : e.ascii_bytes));
-    if(needed > available)
-      throw Input_error(quote(path) + ": the PLY header declares " + std::to_string(e.count) + " '" + e.name +
-                        "' items, more than the " + std::to_string((long long)(available)) +
-                        " bytes after the header can hold (truncated file?)");
-  }
-}
-
 /// .ply and .off, with CGAL's readers.
 inline Point_cloud read_with_cgal(const std::string& path, Point_format format) {
   using Kernel = CGAL::Simple_cartesian<double>;
   std::ifstream is = open_point_file(path, std::ios::in | std::ios::binary);
-  if(format == Point_format::PLY) check_ply_header(path);
+  if(format == Point_format::PLY) check_ply_file(path);
   CGAL::Point_set_3<Kernel::Point_3, Kernel::Vector_3> set;
   bool ok = false;
   std::string diagnostic;
