@@ -3,6 +3,8 @@
 #ifndef CGAL_MLS_PROJECTION_TEST_FRAMEWORK_H
 #define CGAL_MLS_PROJECTION_TEST_FRAMEWORK_H
 
+#include <Eigen/Core>
+
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -11,6 +13,16 @@
 #include <vector>
 
 namespace mls_test {
+
+/// D draws of `dist`, in the order x, y, z. Written `V(dist(gen), dist(gen), dist(gen))` (or
+/// `a + dist(gen), b + dist(gen)`), the order is unspecified (gcc draws z first, clang x), and a
+/// test would check other data with each compiler.
+template <int D = 3, class Distribution, class Generator>
+Eigen::Matrix<double, D, 1> random_vector(Distribution& dist, Generator& gen) {
+  Eigen::Matrix<double, D, 1> v;
+  for(int k = 0; k < D; ++k) v[k] = dist(gen);
+  return v;
+}
 
 struct Test {
   const char* name;

@@ -54,7 +54,7 @@ std::vector<Eigen::Vector3d> directions(int n, unsigned seed) {
   std::mt19937 gen(seed);
   std::normal_distribution<double> g;
   std::vector<Eigen::Vector3d> d;
-  for(int i = 0; i < n; ++i) d.push_back(Eigen::Vector3d(g(gen), g(gen), g(gen)).normalized());
+  for(int i = 0; i < n; ++i) d.push_back(mls_test::random_vector(g, gen).normalized());
   return d;
 }
 
@@ -146,7 +146,8 @@ MLS_TEST(plane_is_reproduced_exactly) {
   std::vector<Epick::Point_3> pts;
   for(int i = -30; i <= 30; ++i)
     for(int j = -30; j <= 30; ++j) {
-      const Eigen::Vector3d p = o + (0.05 * (i + jitter(gen))) * basis[0] + (0.05 * (j + jitter(gen))) * basis[1];
+      const Eigen::Vector2d e = mls_test::random_vector<2>(jitter, gen);
+      const Eigen::Vector3d p = o + (0.05 * (i + e[0])) * basis[0] + (0.05 * (j + e[1])) * basis[1];
       pts.emplace_back(p[0], p[1], p[2]);
     }
   for(int weight = 0; weight < 2; ++weight) {
@@ -212,7 +213,10 @@ MLS_TEST(projection_property) {
   std::mt19937 gen(5);
   std::normal_distribution<double> noise(0, 0.01);
   std::vector<Epick::Point_3> noisy;
-  for(const auto& p : pts) noisy.emplace_back(p.x() + noise(gen), p.y() + noise(gen), p.z() + noise(gen));
+  for(const auto& p : pts) {
+    const Eigen::Vector3d e = mls_test::random_vector(noise, gen);
+    noisy.emplace_back(p.x() + e[0], p.y() + e[1], p.z() + e[2]);
+  }
   MLS::Levin_projection<Epick> Pq(noisy);
   MLS::Levin_projection<Epick, MLS::Plane_function_space<3>> Pp(Pq.shared_samples());
   const double h = Pq.bandwidth();
@@ -249,8 +253,10 @@ MLS_TEST(invariance_under_rigid_motion_and_scaling) {
   std::mt19937 gen(11);
   std::normal_distribution<double> noise(0, 0.005);
   std::vector<Epick::Point_3> pts;
-  for(const auto& p : sphere<Epick>(2500)) // an ellipsoid with noise
-    pts.emplace_back(p.x() + noise(gen), 0.7 * p.y() + noise(gen), 0.5 * p.z() + noise(gen));
+  for(const auto& p : sphere<Epick>(2500)) { // an ellipsoid with noise
+    const Eigen::Vector3d e = mls_test::random_vector(noise, gen);
+    pts.emplace_back(p.x() + e[0], 0.7 * p.y() + e[1], 0.5 * p.z() + e[2]);
+  }
   std::vector<Epick::Point_3> queries;
   for(const auto& d : directions(60, 13)) queries.emplace_back(1.02 * d[0], 0.7 * d[1], 0.5 * d[2] - 0.01);
 
@@ -305,7 +311,10 @@ MLS_TEST(sequential_equals_parallel) {
   std::mt19937 gen(17);
   std::normal_distribution<double> noise(0, 0.01);
   std::vector<Epick::Point_3> pts;
-  for(const auto& p : sphere<Epick>(20000)) pts.emplace_back(p.x() + noise(gen), p.y() + noise(gen), p.z() + noise(gen));
+  for(const auto& p : sphere<Epick>(20000)) {
+    const Eigen::Vector3d e = mls_test::random_vector(noise, gen);
+    pts.emplace_back(p.x() + e[0], p.y() + e[1], p.z() + e[2]);
+  }
   MLS::Levin_projection<Epick> P(pts);
   std::vector<MLS::Projection_result<Epick, 3>> seq, par;
   MLS_CHECK(MLS::project_points<CGAL::Sequential_tag>(P, pts, std::back_inserter(seq)));

@@ -186,7 +186,8 @@ std::vector<Eigen::Vector3d> queries_of(const Bad_case& c, std::size_t count, st
     // 5% of the local size off the input point, along a random direction
     double scale = 0.05;
     if(!c.shapes.empty()) scale *= c.shapes.front().second;
-    Eigen::Vector3d d(g(gen), g(gen), D == 3 ? g(gen) : 0.);
+    Eigen::Vector3d d = mls_test::random_vector(g, gen);
+    if(D == 2) d[2] = 0;
     q.push_back(finite[i] + scale * d.normalized());
   }
   if(finite.empty()) q.emplace_back(0.5, 0.5, 0.);
@@ -379,7 +380,8 @@ std::vector<P3> creased_sphere(int n, unsigned seed) {
   for(const auto& p : round_shape<3>(n)) {
     Eigen::Vector3d x = p;
     if(x[2] < 0) x[2] = -0.7 * (1 - std::hypot(x[0], x[1])); // a cone below the equator
-    pts.emplace_back(x[0] + noise(gen), x[1] + noise(gen), x[2] + noise(gen));
+    const Eigen::Vector3d e = mls_test::random_vector(noise, gen);
+    pts.emplace_back(x[0] + e[0], x[1] + e[1], x[2] + e[2]);
   }
   return pts;
 }
@@ -438,9 +440,11 @@ std::vector<P3> crease_and_smooth_queries(std::size_t n, unsigned seed) {
   std::vector<P3> q;
   for(std::size_t i = 0; i < n; ++i) {
     const double t = 2 * M_PI * (i + 0.3) / n;
-    q.emplace_back(std::cos(t) + g(gen), std::sin(t) + g(gen), g(gen));
+    const Eigen::Vector3d e = mls_test::random_vector(g, gen);
+    q.emplace_back(std::cos(t) + e[0], std::sin(t) + e[1], e[2]);
     const double z = 0.8 + 0.02 * double(i), r = std::sqrt(1 - z * z);
-    q.emplace_back(r * std::cos(t) + g(gen), r * std::sin(t) + g(gen), z + g(gen));
+    const Eigen::Vector3d f = mls_test::random_vector(g, gen);
+    q.emplace_back(r * std::cos(t) + f[0], r * std::sin(t) + f[1], z + f[2]);
   }
   return q;
 }
@@ -451,7 +455,8 @@ std::vector<P3> queries_near(const std::vector<P3>& pts, std::size_t n, unsigned
   std::vector<P3> q;
   for(std::size_t i = 0; i < n; ++i) {
     const P3& p = pts[(i * 7919) % pts.size()];
-    q.emplace_back(p.x() + g(gen), p.y() + g(gen), p.z() + g(gen));
+    const Eigen::Vector3d e = mls_test::random_vector(g, gen);
+    q.emplace_back(p.x() + e[0], p.y() + e[1], p.z() + e[2]);
   }
   return q;
 }

@@ -64,7 +64,7 @@ std::vector<Point> cube(double s, double sigma, unsigned seed) {
       for(int k = 0; k <= n; ++k)
         if(i == 0 || i == n || j == 0 || j == n || k == 0 || k == n) {
           V3 p(-0.5 + i * s, -0.5 + j * s, -0.5 + k * s);
-          if(sigma > 0) p += V3(noise(gen), noise(gen), noise(gen)) * sigma;
+          if(sigma > 0) p += mls_test::random_vector(noise, gen) * sigma;
           pts.emplace_back(p[0], p[1], p[2]);
         }
   return pts;
