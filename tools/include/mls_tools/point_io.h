@@ -8,6 +8,7 @@
 //    parse: here every malformed line is an error that names its line number.
 //  - .ply and .off: vertices only (faces are ignored), always 3D, with CGAL's readers
 //    (CGAL::IO::read_PLY, CGAL::IO::read_OFF into a CGAL::Point_set_3); normals when present.
+//    A .ply file is checked first (ply_check.h): CGAL's reader trusts malformed files.
 // Every error is an `Input_error` (or a `Usage_error` for an unknown extension) with a one-line
 // message. `check_point_cloud` rejects sets no MLS operator can work on.
 
