@@ -121,12 +121,10 @@ MLS_TEST(unified_with_plane_agrees_with_levin) {
   // Both minimise the same energy (with the plane, C(r) is the foot of r on the frame); they stop
   // within the optimisers' tolerance in the flat valleys of noisy data.
   MLS_CHECK_LE(worst, 1e-5);
-  // A known defect (issue 3): on query 40 (0.048 off the sphere) P_U(plane) reports convergence
-  // 1.5 h away from P_L, off the surface: is_supported rejects the fit from Levin's start (energy
-  // 32 times lower), whose C(r) lies in a gap of the random sampling, 0.62 h from the nearest
-  // foot. Found when the data stopped depending on the compiler's order of evaluation; not fixed
-  // yet. No other query may disagree.
-  MLS_CHECK_LE(apart, 1);
+  // Query 40 (0.048 off the sphere) has its C(r) in a gap of the random sampling, 0.62 h from the
+  // nearest foot: the support test once rejected Levin's start there, and P_U(plane) stopped
+  // 1.5 h away, off the surface.
+  MLS_CHECK(apart == 0);
 }
 
 MLS_TEST(wedge_2d_is_reproduced_exactly) {

@@ -247,7 +247,8 @@ protected:
   // When no fit is supported (a query beyond the end of the data), all fits compete.
   // Whether C(r) lies within h/2 of the closest point of some weighted input point, or, when
   // h is close to the sample spacing, within the spacing of those closest points around it (on a
-  // grid of spacing s, C(r) can be s/sqrt(2) from every sample).
+  // grid of spacing s, C(r) can be s/sqrt(2) from every sample), or, in a gap of a random
+  // sampling, amid closest points on every side.
   bool is_supported(const Fit& f, const Neighborhood<D>& nbh) const {
     std::vector<V> c;
     c.reserve(nbh.size());
@@ -266,7 +267,19 @@ protected:
     double spacing = std::numeric_limits<double>::infinity();
     for(std::size_t j = 0; j < c.size(); ++j)
       if(j != k) spacing = (std::min)(spacing, (c[j] - c[k]).squaredNorm());
-    return std::isfinite(spacing) && nearest <= spacing;
+    if(std::isfinite(spacing) && nearest <= spacing) return true;
+    // C(r) in a gap of the sampling: supported when feet within 1.5 h surround it, one in each
+    // orthant of the tangent directions (a C(r) beyond the end of the data has none on one side)
+    constexpr int orthants = 1 << (D - 1);
+    bool seen[orthants] = {};
+    for(const V& cj : c) {
+      const V t = f.frame.axes.transpose() * (cj - f.C);
+      if(t.template head<D - 1>().squaredNorm() > 2.25) continue;
+      int o = 0;
+      for(int a = 0; a < D - 1; ++a) o |= (t[a] > 0 ? 1 : 0) << a;
+      seen[o] = true;
+    }
+    return std::all_of(seen, seen + orthants, [](bool b) { return b; });
   }
 
   Fit select(const std::vector<Fit>& fits) const {
