@@ -183,7 +183,15 @@ struct Seed_projection<Projection, false> {
 /// `seed_spacing`\f$\cdot h\f$ (one per occupied cell, the first in input order) are projected
 /// once; each successful result keeps its local fit (frame and coefficients) and its oriented
 /// normal. The oriented results are available as `projected_seeds()`, e.g. for the detection of
-/// sharp features (project once, use twice).
+/// sharp features (project once, use twice). A local fit is blended (see below) only where it
+/// agrees with the oriented normals of the samples within \f$2h\f$ of its projected point: for
+/// each such sample \f$q\f$ with normal \f$n\f$, \f$q + n h/2\f$ must be outside the fit and
+/// \f$q - n h/2\f$ inside, and the closest points of these points, and of the points
+/// \f$h\f$ and \f$1.5h\f$ above and below the projected point, must lie on parts of the member less
+/// steep than \f$75^\circ\f$ in its frame; at most 2% of the tests may fail. This drops the wedge
+/// fans whose extension beyond their data turns the wrong side out (a fan fitted in the frame of
+/// one face of a crease holds the other face perpendicular to its frame, a part whose side is
+/// ill-defined), which put bubbles inside the solid and holes in its surface.
 ///
 /// <b>Screening by P_L.</b> With an operator that finds creases (`Wedge_fan_function_space`
 /// alone or in `Mixed_projection`) and `levin_screening` set (default), every seed is first
@@ -209,8 +217,10 @@ struct Seed_projection<Projection, false> {
 /// \f$f\f$ is that member's exact signed distance. Far from the data, with \f$d\f$ the distance to
 /// the nearest seed and \f$\lambda\f$ a smooth step from 0 at \f$d\f$ = `far_start`\f$\cdot h\f$ to
 /// 1 at `far_end`\f$\cdot h\f$, \f$f = (1 - \lambda) f_{\mathrm{fit}} + \lambda\, f_{\mathrm{far}}\f$,
-/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the nearest seed's normal (cheap, the right sign
-/// for a closed surface, and not an extrapolated quadratic).
+/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the nearest seed's local fit at the point
+/// \f$h/2\f$ from the seed towards \f$x\f$ (by its normal where the fit is undecided there):
+/// cheap, not an extrapolated quadratic, and, unlike the seed's normal, right beyond a convex
+/// crease or corner, whose nearest seed sits on the crease with the normal of one face.
 ///
 /// <b>Evaluation, `EXACT`.</b> \f$f(x) = \pm|x - P(x)|\f$, \f$P\f$ the projection, the sign that of
 /// \f$(x - P(x))\cdot n\f$ with \f$n\f$ the result's normal oriented as above; where the projection
@@ -298,10 +308,10 @@ public:
     }
     const Fit& near = d.fits[idx[nearest]];
     const double dmin = dist[nearest];
-    const double far = ((x - near.point).dot(near.normal) < 0 ? -1. : 1.) * dmin;
     const double lambda =
       internal::smoothstep((dmin - d.options.far_start * d.h) / ((d.options.far_end - d.options.far_start) * d.h));
-    if(lambda >= 1. || m < 2) return far;
+    const auto far = [&] { return far_sign(d, near, x) * dmin; };
+    if(lambda >= 1. || m < 2) return far();
     double W = 0, F = 0;
     for(std::size_t j = 0; j < m; ++j) {
       const double w = R > 0 ? internal::wendland_c2(dist[j] / R) : 1.;
@@ -309,9 +319,9 @@ public:
       W += w;
       F += w * fit_distance(d, d.fits[idx[j]], x);
     }
-    const double blend = W > 0 ? F / W : far;
-    const double value = (1. - lambda) * blend + lambda * far;
-    return std::isfinite(value) ? value : far;
+    const double blend = W > 0 ? F / W : far();
+    const double value = lambda > 0. ? (1. - lambda) * blend + lambda * far() : blend;
+    return std::isfinite(value) ? value : far();
   }
 
   /// \f$f(p)\f$ from a projection of `p`, whatever the mode (see `Implicit_function_mode::EXACT`).
@@ -340,7 +350,7 @@ public:
   Point_3 get_inner_point() const { return data_->inner_point; }
 
   /// The results of the seed projections, in world coordinates, their normals oriented as the
-  /// function's (outward): the seeds' local fits. Failed projections are left out.
+  /// function's (outward). Failed projections are left out; the unblended seeds are in.
   const std::vector<Result>& projected_seeds() const { return data_->projected; }
 
   /// The projection operator.
@@ -361,8 +371,12 @@ public:
   Status status() const { return data_->status; }
   /// `status() == Status::VALID`.
   bool is_valid() const { return data_->status == Status::VALID; }
-  /// The number of seeds kept (successful projections).
+  /// The number of seeds whose local fits are blended.
   std::size_t number_of_seeds() const { return data_->fits.size(); }
+  /// The number of seeds projected successfully whose local fit is not blended, because it
+  /// disagrees with the oriented normals of the samples around it (see "Seeds"); their
+  /// projections are among `projected_seeds()`.
+  std::size_t number_of_unblended_seeds() const { return data_->unblended; }
   /// The number of seeds whose projection failed (left out).
   std::size_t number_of_failed_seeds() const { return data_->failed; }
   /// What the estimation of oriented normals did (all zero when the samples carry normals).
@@ -392,6 +406,7 @@ private:
     std::vector<Fit> fits;                // indexed like `seeds`
     std::vector<Result> projected;
     std::size_t failed = 0;
+    std::size_t unblended = 0;
     std::optional<Seed_projection_type> seed_projection;
     std::size_t operator_seeds = 0;
     double threshold = -1;
@@ -416,13 +431,59 @@ private:
     return f.sign * f.unit * fit_closest_point(d, f, y).signed_distance;
   }
 
+  // The sign of f at `x` as the nearest seed's fit `f` tells it: that of the fit's signed
+  // distance at the point h/2 from the seed towards `x` (where the fit still explains its data:
+  // at a crease, the fan tells a convex crease's outside from its inside; the seed's normal alone
+  // would put the space beyond the other face inside), or of the normal where that is undecided.
+  static double far_sign(const Data& d, const Fit& f, const V& x) {
+    const V e = x - f.point;
+    const double n = e.norm();
+    if(n > 0) {
+      const double v = fit_distance(d, f, V(f.point + (0.5 * d.h / n) * e));
+      if(std::isfinite(v) && std::abs(v) > 0.05 * d.h) return v < 0 ? -1. : 1.;
+    }
+    return e.dot(f.normal) < 0 ? -1. : 1.;
+  }
+
   double far_value(const V& x) const {
     const Data& d = *data_;
     thread_local std::vector<std::size_t> idx;
     d.seeds->k_nearest(x, 1, idx);
     if(idx.empty()) return 1.;
     const Fit& f = d.fits[idx[0]];
-    return ((x - f.point).dot(f.normal) < 0 ? -1. : 1.) * (x - f.point).norm();
+    return far_sign(d, f, x) * (x - f.point).norm();
+  }
+
+  // Whether the oriented fit `f` (sample-local coordinates) agrees with the oriented normals of
+  // the samples within 2h of its projected point `P`: each sample q with normal n must have
+  // q + n h/2 outside of the fit and q - n h/2 inside, and the closest points of these test
+  // points, and of P + t n and P - t n for t = h, 1.5h (the blend's reach), must lie on parts of
+  // the member less steep than 75 degrees in its frame (the side of a part perpendicular to the
+  // frame, e.g. a thin vertical cone of a wedge fan, is ill-defined). A fit that fails more than
+  // 2% of the tests would carry the wrong sign into the blend.
+  static bool agrees_with_normals(const Data& d, const Fit& f, const V& P, const V& nP) {
+    if(d.sample_normals.empty() || f.count == 0) return true;
+    std::size_t wrong = 0, tests = 0;
+    const auto test = [&](const V& x, int expected) {
+      ++tests;
+      const Closest_point<3> cp = fit_closest_point(d, f, V(f.axes.transpose() * (x - f.origin) / f.unit));
+      if(!(cp.normal[2] >= 0.25) || (expected != 0 && !(f.sign * cp.signed_distance * expected > 0))) ++wrong;
+    };
+    thread_local std::vector<std::size_t> idx;
+    idx.clear();
+    d.projection.samples().in_ball(P, 2 * d.h, idx);
+    for(std::size_t i : idx) {
+      const V& n = d.sample_normals[i];
+      if(!(n.squaredNorm() > 0.25)) continue;
+      const V& q = d.projection.samples().local_point(i);
+      test(V(q + 0.5 * d.h * n), 1);
+      test(V(q - 0.5 * d.h * n), -1);
+    }
+    for(double t : {1., 1.5}) {
+      test(V(P + t * d.h * nP), 0);
+      test(V(P - t * d.h * nP), 0);
+    }
+    return 50 * wrong <= tests;
   }
 
   // The sign of the sum of the dot products of `n` with the oriented normals of the 6 samples
@@ -536,11 +597,15 @@ private:
         continue;
       }
       r.normal = KT::to_vector(rn);
+      d.projected.push_back(r);
+      if(!agrees_with_normals(d, f, P, rn)) { // a good projection, but a fit not to blend
+        ++d.unblended;
+        continue;
+      }
       f.point = P; // converted to seed-local coordinates below
       f.normal = rn;
       seed_points.push_back(r.point);
       fits.push_back(f);
-      d.projected.push_back(r);
     }
     if(fits.size() < 2) {
       d.status = Status::TOO_FEW_SEEDS;

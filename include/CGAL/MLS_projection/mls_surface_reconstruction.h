@@ -201,6 +201,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.bandwidth = function.bandwidth();
     out.seeds = function.number_of_seeds();
     out.operator_seeds = function.number_of_operator_seeds();
+    out.unblended_seeds = function.number_of_unblended_seeds();
     out.failed_seeds = function.number_of_failed_seeds();
     if(function.status() == Function::Status::CANCELLED) return fail("cancelled");
     if(!function.is_valid()) return fail("no implicit function (too few seeds could be projected: degenerate data)");
