@@ -173,8 +173,9 @@ group_errors() {
 # ---------------------------------------------------------------------------------------------
 group_meshing() {
   # The built-in solid (11810 points), coarse criteria, Levin's operator: the default operator
-  # and space (unified, mixed) cost about 0.1 s per seed, 10 minutes or more on this input on
-  # a loaded machine; they run below on a small box. Output mesh.off in the working directory.
+  # and space (unified, mixed) take about a minute of CPU on this input (test_meshing's
+  # builtin_solid_default_mesh runs them); here they run below on a small box. Output mesh.off in
+  # the working directory.
   new_dir
   run --operator levin --size 0.12 --distance 0.02 --quiet
   if check_mesh "built-in solid, levin" "$DIR/mesh.off"; then
