@@ -188,7 +188,7 @@ struct Seed_projection<Projection, false> {
 /// each such sample \f$q\f$ with normal \f$n\f$, \f$q + n h/2\f$ must be outside the fit and
 /// \f$q - n h/2\f$ inside, and the closest points of these points, and of the points
 /// \f$h\f$ and \f$1.5h\f$ above and below the projected point, must lie on parts of the member less
-/// steep than \f$75^\circ\f$ in its frame; at most 2% of the tests may fail. This drops the wedge
+/// steep than \f$75^\circ\f$ in its frame; at most 10% of the tests may fail. This drops the wedge
 /// fans whose extension beyond their data turns the wrong side out (a fan fitted in the frame of
 /// one face of a crease holds the other face perpendicular to its frame, a part whose side is
 /// ill-defined), which put bubbles inside the solid and holes in its surface.
@@ -460,7 +460,7 @@ private:
   // points, and of P + t n and P - t n for t = h, 1.5h (the blend's reach), must lie on parts of
   // the member less steep than 75 degrees in its frame (the side of a part perpendicular to the
   // frame, e.g. a thin vertical cone of a wedge fan, is ill-defined). A fit that fails more than
-  // 2% of the tests would carry the wrong sign into the blend.
+  // 10% of the tests would carry the wrong sign into the blend.
   static bool agrees_with_normals(const Data& d, const Fit& f, const V& P, const V& nP) {
     if(d.sample_normals.empty() || f.count == 0) return true;
     std::size_t wrong = 0, tests = 0;
@@ -483,7 +483,7 @@ private:
       test(V(P + t * d.h * nP), 0);
       test(V(P - t * d.h * nP), 0);
     }
-    return 50 * wrong <= tests;
+    return 10 * wrong <= tests;
   }
 
   // The sign of the sum of the dot products of `n` with the oriented normals of the 6 samples
