@@ -328,7 +328,7 @@ int run(int argc, char** argv) {
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds,
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
-               report.features_dropped ? " (not protected: Mesh_3 failed with them)" : "", closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str());
+               report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str());
   return 0;
 }
 

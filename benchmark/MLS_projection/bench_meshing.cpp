@@ -44,8 +44,18 @@
 //                      [--methods mls,poisson] [--operator levin|unified]
 //                      [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]
 //                      [--poisson-criteria default|matched|both]
+//                      [--hole X,Y,Z,R] [--outliers FRACTION] [--mesh-dir DIR]
+//                      [--max-meshing-seconds S]
 // Shapes: solid, solid+noise, sphere (the default list), fandisk, fandisk+noise.
 // --points N samples each shape at the spacing that gives about N points (sqrt(area / N)).
+// Defects of the input, for the manual's case studies (scripts/figures):
+//   --hole X,Y,Z,R removes the samples within R of (X, Y, Z);
+//   --outliers F adds F x (number of samples) points uniform in the shape's bounding box enlarged
+//     by 10% on every side, each with a uniformly random unit normal (fixed seed).
+// --mesh-dir DIR writes each mesh as DIR/<shape>-mls.off, DIR/<shape>-poisson.off (default
+// criteria) and DIR/<shape>-poisson-matched.off, and the input points as DIR/<shape>-input.xyz.
+// --max-meshing-seconds S stops MLS's Mesh_3 after S seconds (Meshing_options::max_meshing_seconds;
+// default 0: no limit), which then fails.
 
 #include <CGAL/MLS_projection/Meshing_options.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
@@ -63,6 +73,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/compute_average_spacing.h>
+#include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/poisson_surface_reconstruction.h>
 #include <CGAL/property_map.h>
 
@@ -78,6 +89,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -325,6 +337,10 @@ struct Settings {
   Options::Operator op = Options::Operator::UNIFIED;
   Options::Space space = Options::Space::MIXED;
   int threads = 0;
+  std::optional<std::array<double, 4>> hole; // centre, radius
+  double outliers = 0;                       // fraction of the samples
+  std::string mesh_dir;                      // empty: no output
+  double max_meshing_seconds = 0;
 };
 
 [[noreturn]] void usage(int code) {
@@ -332,6 +348,8 @@ struct Settings {
                "                     [--methods mls,poisson] [--operator levin|unified]\n"
                "                     [--space plane|quadratic|wedge|mixed] [--features on|off] [--threads N]\n"
                "                     [--poisson-criteria default|matched|both]\n"
+               "                     [--hole X,Y,Z,R] [--outliers FRACTION] [--mesh-dir DIR]\n"
+               "                     [--max-meshing-seconds S]\n"
                "--noise is absolute (default 0.1 x the spacing); with --operator levin the space defaults to quadratic.\n"
                "Meshes sampled analytic solids with mls_surface_reconstruction and with CGAL's Poisson\n"
                "reconstruction (same points and normals, same run) and prints their errors against the\n"
@@ -371,6 +389,18 @@ Settings parse(int argc, char** argv) {
       }
     }
     else if(a == "--noise") s.noise = std::stod(value());
+    else if(a == "--outliers") s.outliers = std::stod(value());
+    else if(a == "--mesh-dir") s.mesh_dir = value();
+    else if(a == "--max-meshing-seconds") s.max_meshing_seconds = std::stod(value());
+    else if(a == "--hole") {
+      std::array<double, 4> h;
+      std::stringstream ss(value());
+      std::string item;
+      std::size_t n = 0;
+      while(std::getline(ss, item, ',') && n < 4) h[n++] = std::stod(item);
+      if(n != 4 || !(h[3] > 0)) usage(2);
+      s.hole = h;
+    }
     else if(a == "--threads") s.threads = std::stoi(value());
     else if(a == "--shapes") {
       s.shapes.clear();
@@ -394,7 +424,7 @@ Settings parse(int argc, char** argv) {
       usage(2);
   }
   if(s.op == Options::Operator::LEVIN && !s.space_given) s.space = Options::Space::QUADRATIC;
-  if(!(s.spacing > 0)) usage(2);
+  if(!(s.spacing > 0) || !(s.outliers >= 0)) usage(2);
   return s;
 }
 
@@ -460,6 +490,52 @@ std::string ratio(double poisson, double mls) {
   return fmt(poisson / mls, "%.2f");
 }
 
+/// The input defects of the case studies: a hole (samples within the ball removed) and outliers
+/// (uniform in the enlarged bounding box, random unit normals), with fixed seeds.
+void apply_defects(mls_tools::Point_cloud& cloud, const mls_tools::Analytic_solid& solid, const Settings& s) {
+  if(s.hole) {
+    const auto& h = *s.hole;
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < cloud.size(); ++i) {
+      const auto& p = cloud.points[i];
+      const double d2 = (p[0] - h[0]) * (p[0] - h[0]) + (p[1] - h[1]) * (p[1] - h[1]) + (p[2] - h[2]) * (p[2] - h[2]);
+      if(d2 <= h[3] * h[3]) continue;
+      cloud.points[kept] = cloud.points[i];
+      cloud.normals[kept] = cloud.normals[i];
+      ++kept;
+    }
+    cloud.points.resize(kept);
+    cloud.normals.resize(kept);
+  }
+  if(s.outliers > 0) {
+    const auto box = solid.bounding_box();
+    mls_tools::Random random(31337);
+    const std::size_t n = std::size_t(std::lround(s.outliers * double(cloud.size())));
+    for(std::size_t i = 0; i < n; ++i) {
+      mls_tools::Vec3 p, normal;
+      for(std::size_t k = 0; k < 3; ++k) {
+        const double margin = 0.1 * (box[1][k] - box[0][k]);
+        p[k] = box[0][k] - margin + random.uniform() * (box[1][k] - box[0][k] + 2 * margin);
+      }
+      double length = 0;
+      do {
+        for(std::size_t k = 0; k < 3; ++k) normal[k] = random.gaussian();
+        length = mls_tools::norm(normal);
+      } while(!(length > 1e-9));
+      for(std::size_t k = 0; k < 3; ++k) normal[k] /= length;
+      cloud.points.push_back(p);
+      cloud.normals.push_back(normal);
+    }
+  }
+}
+
+void write_mesh(const Settings& s, const std::string& name, const Mesh& mesh) {
+  if(s.mesh_dir.empty()) return;
+  const std::string path = s.mesh_dir + "/" + name + ".off";
+  if(!CGAL::IO::write_OFF(path, mesh, CGAL::parameters::stream_precision(17)))
+    std::cerr << "bench_meshing: cannot write " << path << "\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -503,7 +579,8 @@ int main(int argc, char** argv) {
     }
     const double spacing = s.points > 0 ? std::sqrt(solid->area() / double(s.points)) : s.spacing;
     const double sigma = noisy ? (s.noise < 0 ? 0.1 * spacing : s.noise) : 0.;
-    const mls_tools::Point_cloud cloud = solid->sample(spacing, sigma);
+    mls_tools::Point_cloud cloud = solid->sample(spacing, sigma);
+    apply_defects(cloud, *solid, s);
     std::vector<Point_with_normal> points;
     for(std::size_t i = 0; i < cloud.size(); ++i)
       points.emplace_back(Point(cloud.points[i][0], cloud.points[i][1], cloud.points[i][2]),
@@ -511,6 +588,16 @@ int main(int argc, char** argv) {
     const auto point_map = CGAL::First_of_pair_property_map<Point_with_normal>();
     const auto normal_map = CGAL::Second_of_pair_property_map<Point_with_normal>();
     Row row{shape, points.size(), spacing, sigma, {}, {}, {}};
+    if(!s.mesh_dir.empty()) {
+      const std::string path = s.mesh_dir + "/" + shape + "-input.xyz";
+      std::ofstream out(path);
+      out.precision(17);
+      for(const auto& [p, n] : points) out << p << ' ' << n << '\n';
+      if(!out) {
+        std::cerr << "bench_meshing: cannot write " << path << "\n";
+        return 1;
+      }
+    }
 
     // Sanity checks of the analytic side: all of these should be about 0 or agree.
     {
@@ -550,6 +637,7 @@ int main(int argc, char** argv) {
       options.projection_operator = s.op;
       options.space = s.space;
       options.features = s.features;
+      options.max_meshing_seconds = s.max_meshing_seconds;
       CGAL::MLS::Meshing_report report;
       options.report = &report;
       const auto start = std::chrono::steady_clock::now();
@@ -568,6 +656,7 @@ int main(int argc, char** argv) {
       const double seconds = seconds_since(t);
       const double cpu_seconds = cpu_now() - cpu;
       row.mls = measure(mesh, *solid, spacing);
+      write_mesh(s, shape + "-mls", mesh);
       row.mls.ran = true;
       row.mls.ok = ok && row.mls.ok;
       row.mls.seconds = seconds;
@@ -575,11 +664,14 @@ int main(int argc, char** argv) {
       row.mls.feature_polylines = report.feature_polylines;
       row.mls.corners = report.corners;
       std::fprintf(stderr,
-                   "%s: MLS %.1f s (cpu %.1f s)%s%s (normals %.1f s, seeds %.1f s: %zu seeds, %zu failed; features "
-                   "%.1f s; meshing %.1f s, %zu evaluations; h %.4g, facet size %.4g, distance %.4g); volume %.4f\n",
+                   "%s: MLS %.1f s (cpu %.1f s)%s%s (normals %.1f s, seeds %.1f s: %zu seeds blended (%zu with P_L's fit), "
+                   "%zu unblended, %zu failed; features "
+                   "%.1f s%s; meshing %.1f s, %zu evaluations; h %.4g, facet size %.4g, distance %.4g); volume %.4f\n",
                    shape.c_str(), seconds, cpu_seconds, ok ? "" : ", failed: ", ok ? "" : report.failure,
-                   report.seconds_normals, report.seconds_seeds, report.seeds, report.failed_seeds,
-                   report.seconds_features, report.seconds_meshing, report.evaluations, report.bandwidth,
+                   report.seconds_normals, report.seconds_seeds, report.seeds, report.levin_fallback_seeds,
+                   report.unblended_seeds, report.failed_seeds,
+                   report.seconds_features,                    report.features_dropped ? (report.feature_budget_exceeded ? ", features dropped: over budget" : ", features dropped") : "",
+                   report.seconds_meshing, report.evaluations, report.bandwidth,
                    report.facet_size, report.facet_distance, row.mls.volume);
     }
     if(s.poisson) {
@@ -603,6 +695,7 @@ int main(int argc, char** argv) {
         const double cpu_seconds = cpu_now() - cpu;
         Figures& f = variant == 0 ? row.poisson : row.poisson_matched;
         f = measure(mesh, *solid, spacing);
+        write_mesh(s, shape + (variant == 0 ? "-poisson" : "-poisson-matched"), mesh);
         f.ran = true;
         f.ok = ok && f.ok;
         f.seconds = seconds;

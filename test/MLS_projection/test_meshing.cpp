@@ -526,6 +526,44 @@ MLS_TEST(builtin_solid_default_mesh) {
   std::cout << "  " << report.feature_polylines << " feature polylines, " << report.corners << " corners" << std::endl;
   check_closed_mesh(c, 0, 0.25 * h);
   MLS_CHECK(report.feature_polylines >= 15);
+  MLS_CHECK_MSG(!report.features_dropped, "the polylines were not protected"); // nor over the budget
+}
+
+// Mesh_3 with polylines over its evaluation budget meshes again without them: on the unit sphere
+// with 5 circles on it as polylines (a normal run of a few 10^4 evaluations) and a budget of 1000 evaluations, the mesh is made without the polyline, closed
+// and accurate, and the report says so; with the default budget, the polyline is protected.
+MLS_TEST(feature_budget_drops_features) {
+  using Input = CGAL::MLS::internal::Mesher_input<K>;
+  const auto sphere = [](const Point& p) { return std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1.; };
+  Input in;
+  in.function = sphere;
+  in.bounding_sphere = K::Sphere_3(CGAL::ORIGIN, 4.);
+  in.inner_point = CGAL::ORIGIN;
+  // 5 circles of latitude (Mesh_3 starts from the protecting balls: one curve alone gives it no
+  // surface facet to start from)
+  for(const double z : {-0.8, -0.4, 0., 0.4, 0.8}) {
+    std::vector<Point> circle;
+    const double r = std::sqrt(1 - z * z);
+    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * M_PI / 24), r * std::sin(i * M_PI / 24), z);
+    circle.push_back(circle.front()); // closed: the first point repeated exactly
+    in.polylines.push_back(circle);
+  }
+  in.facet_size = 0.15;
+  in.facet_distance = 0.01;
+  in.expected_evaluations = 100;
+  for(const double budget : {10., 1e4}) { // 1000 evaluations, or a million
+    in.feature_budget = budget;
+    Mesh m;
+    const auto r = CGAL::MLS::internal::mesh_with_mesh_3<CGAL::Sequential_tag>(in, m);
+    const Mesh_check c = check_mesh(m, sphere);
+    std::cout << "  budget " << budget * in.expected_evaluations << " evaluations: " << r.evaluations
+              << " evaluations (after the restart, if any), features dropped " << r.features_dropped << std::endl;
+    MLS_CHECK(r.success);
+    MLS_CHECK(r.features_dropped == (budget < 100) && r.feature_budget_exceeded == (budget < 100));
+    // the vertices of the protected polylines lie on their chords, whose middles are up to
+    // 1 - cos(pi / 48) = 2.1e-3 inside the sphere
+    check_closed_mesh(c, 2, 2.5e-3);
+  }
 }
 
 // Cancellation: a callback returning false during the seeds, or during the meshing, makes the

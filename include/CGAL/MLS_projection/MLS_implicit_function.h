@@ -191,7 +191,12 @@ struct Seed_projection<Projection, false> {
 /// steep than \f$75^\circ\f$ in its frame; at most 10% of the tests may fail. This drops the wedge
 /// fans whose extension beyond their data turns the wrong side out (a fan fitted in the frame of
 /// one face of a crease holds the other face perpendicular to its frame, a part whose side is
-/// ill-defined), which put bubbles inside the solid and holes in its surface.
+/// ill-defined), which put bubbles inside the solid and holes in its surface, and the fans that
+/// fit noise (crumpled, in tilted frames). Where the operator's fit of a seed is dropped or its
+/// projection failed, P_L's fit of the seed (computed by the screening, below) is blended in its
+/// place when it passes the same test and its energy is at most \f$\mu^2 E_{5}\f$ (\f$\mu\f$ =
+/// `fallback_noise_factor`, \f$E_5\f$ as below): a fit of noise, not of a crease, which it would
+/// round. On noiseless data \f$E_5\f$ is about 0 and no seed falls back; on noisy data, many.
 ///
 /// <b>Screening by P_L.</b> With an operator that finds creases (`Wedge_fan_function_space`
 /// alone or in `Mixed_projection`) and `levin_screening` set (default), every seed is first
@@ -217,10 +222,11 @@ struct Seed_projection<Projection, false> {
 /// \f$f\f$ is that member's exact signed distance. Far from the data, with \f$d\f$ the distance to
 /// the nearest seed and \f$\lambda\f$ a smooth step from 0 at \f$d\f$ = `far_start`\f$\cdot h\f$ to
 /// 1 at `far_end`\f$\cdot h\f$, \f$f = (1 - \lambda) f_{\mathrm{fit}} + \lambda\, f_{\mathrm{far}}\f$,
-/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the nearest seed's local fit at the point
-/// \f$h/2\f$ from the seed towards \f$x\f$ (by its normal where the fit is undecided there):
-/// cheap, not an extrapolated quadratic, and, unlike the seed's normal, right beyond a convex
-/// crease or corner, whose nearest seed sits on the crease with the normal of one face.
+/// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the majority of the 3 nearest seeds, each
+/// by its local fit at the point \f$h/2\f$ from the seed towards \f$x\f$ (by its normal where
+/// the fit is undecided there): cheap, not an extrapolated quadratic, unlike the seed's normal
+/// right beyond a convex crease or corner, whose nearest seed sits on the crease with the normal
+/// of one face, and, by the vote, robust to one bad fit (on noisy data, a fan fitted to the noise).
 ///
 /// <b>Evaluation, `EXACT`.</b> \f$f(x) = \pm|x - P(x)|\f$, \f$P\f$ the projection, the sign that of
 /// \f$(x - P(x))\cdot n\f$ with \f$n\f$ the result's normal oriented as above; where the projection
@@ -306,11 +312,20 @@ public:
       if(dist[j] < dist[nearest]) nearest = j;
       R = (std::max)(R, dist[j]);
     }
-    const Fit& near = d.fits[idx[nearest]];
     const double dmin = dist[nearest];
     const double lambda =
       internal::smoothstep((dmin - d.options.far_start * d.h) / ((d.options.far_end - d.options.far_start) * d.h));
-    const auto far = [&] { return far_sign(d, near, x) * dmin; };
+    const auto far = [&] {
+      // the majority of the 3 nearest seeds' signs
+      std::array<std::size_t, 64> order;
+      for(std::size_t j = 0; j < m; ++j) order[j] = j;
+      const std::size_t voters = (std::min<std::size_t>)(3, m);
+      std::partial_sort(order.begin(), order.begin() + voters, order.begin() + m,
+                        [&](std::size_t a, std::size_t b) { return dist[a] < dist[b]; });
+      double vote = 0;
+      for(std::size_t j = 0; j < voters; ++j) vote += far_sign(d, d.fits[idx[order[j]]], x);
+      return (vote < 0 ? -1. : 1.) * dmin;
+    };
     if(lambda >= 1. || m < 2) return far();
     double W = 0, F = 0;
     for(std::size_t j = 0; j < m; ++j) {
@@ -358,6 +373,7 @@ public:
   /// The operator that projected the seeds (see "Screening by P_L"); only on a function whose
   /// seeds were projected (`status()` neither `NO_BANDWIDTH` nor `TOO_FEW_SEEDS` before them).
   const Seed_projection_type& seed_projection() const { return *data_->seed_projection; }
+  /// Whether `seed_projection()` may be called.
   bool has_seed_projection() const { return bool(data_->seed_projection); }
   /// The number of seeds projected by the closest-point operator (all seeds without screening).
   std::size_t number_of_operator_seeds() const { return data_->operator_seeds; }
@@ -374,11 +390,16 @@ public:
   /// The number of seeds whose local fits are blended.
   std::size_t number_of_seeds() const { return data_->fits.size(); }
   /// The number of seeds projected successfully whose local fit is not blended, because it
-  /// disagrees with the oriented normals of the samples around it (see "Seeds"); their
-  /// projections are among `projected_seeds()`.
+  /// disagrees with the oriented normals of the samples around it (see "Seeds"), and whose
+  /// P_L fit does not agree either (or was not computed); their projections are among
+  /// `projected_seeds()`.
   std::size_t number_of_unblended_seeds() const { return data_->unblended; }
-  /// The number of seeds whose projection failed (left out).
+  /// The number of seeds whose projection failed (not in `projected_seeds()`) and whose P_L fit
+  /// is not blended either.
   std::size_t number_of_failed_seeds() const { return data_->failed; }
+  /// The number of seeds blended with P_L's fit in place of the operator's, which failed or
+  /// disagreed with the sample normals (see "Seeds"); counted in `number_of_seeds()`.
+  std::size_t number_of_levin_fallbacks() const { return data_->levin_fallbacks; }
   /// What the estimation of oriented normals did (all zero when the samples carry normals).
   const internal::Oriented_normals_report& normals_report() const { return data_->normals_report; }
 
@@ -407,9 +428,11 @@ private:
     std::vector<Result> projected;
     std::size_t failed = 0;
     std::size_t unblended = 0;
+    std::size_t levin_fallbacks = 0;
     std::optional<Seed_projection_type> seed_projection;
     std::size_t operator_seeds = 0;
     double threshold = -1;
+    double fallback_threshold = -1; // the largest energy of a P_L fit blended in place of the operator's
     internal::Oriented_normals_report normals_report;
     Sphere_3 sphere;
     Point_3 inner_point;
@@ -445,13 +468,18 @@ private:
     return e.dot(f.normal) < 0 ? -1. : 1.;
   }
 
+  // The far value: the distance to the nearest seed, signed by the majority of the 3 nearest.
   double far_value(const V& x) const {
     const Data& d = *data_;
     thread_local std::vector<std::size_t> idx;
-    d.seeds->k_nearest(x, 1, idx);
+    d.seeds->k_nearest(x, 3, idx);
     if(idx.empty()) return 1.;
-    const Fit& f = d.fits[idx[0]];
-    return far_sign(d, f, x) * (x - f.point).norm();
+    double vote = 0, dmin = std::numeric_limits<double>::infinity();
+    for(std::size_t i : idx) {
+      vote += far_sign(d, d.fits[i], x);
+      dmin = (std::min)(dmin, (x - d.fits[i].point).norm());
+    }
+    return (vote < 0 ? -1. : 1.) * dmin;
   }
 
   // Whether the oriented fit `f` (sample-local coordinates) agrees with the oriented normals of
@@ -552,8 +580,8 @@ private:
     // 3. project the seeds, in chunks so that the callback is called often
     std::vector<Point_3> queries(seed_index.size());
     for(std::size_t j = 0; j < seed_index.size(); ++j) queries[j] = samples.to_world(samples.local_point(seed_index[j]));
-    std::vector<Result> results;
-    if(!project_seeds(d, ConcurrencyTag(), queries, results, callback, start)) {
+    std::vector<Result> results, levin_results;
+    if(!project_seeds(d, ConcurrencyTag(), queries, results, levin_results, callback, start)) {
       d.status = Status::CANCELLED;
       return;
     }
@@ -561,16 +589,14 @@ private:
     // 4. the local fits, oriented
     std::vector<Point_3> seed_points;
     std::vector<Fit> fits;
-    for(std::size_t j = 0; j < results.size(); ++j) {
-      Result& r = results[j];
-      Fit f;
+    // The oriented fit of a result, with its projected point P and oriented normal (sample-local);
+    // false when the result or its fit is unusable.
+    const auto make_fit = [&](const Result& r, Fit& f, V& P, V& rn) {
       f.count = int(r.coefficients.size());
       // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
-      if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters) {
-        ++d.failed;
-        continue;
-      }
-      const V P = samples.to_local(r.point);
+      if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters)
+        return false;
+      P = samples.to_local(r.point);
       f.axes.col(0) = KT::to_eigen(r.frame.tangents[0]);
       f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
       f.axes.col(2) = KT::to_eigen(r.frame.normal);
@@ -586,25 +612,42 @@ private:
         cp = fit_closest_point(d, f, V(f.axes.transpose() * (P - f.origin) / f.unit));
       }
       const V up = f.axes * cp.normal;
-      V rn = KT::to_eigen(r.normal);
+      rn = KT::to_eigen(r.normal);
       double vote = orientation_vote(d, P, up);
       if(vote == 0) vote = up.dot(rn) < 0 ? -1. : 1.; // no sample normal decides: the operator's
       f.sign = vote;
       if(rn.dot(up) * vote < 0) rn = -rn;
-      if(!P.allFinite() || !f.origin.allFinite() || !f.axes.allFinite() || !up.allFinite() || !rn.allFinite() ||
-         !(std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h)) { // the fit must pass through its own projection
-        ++d.failed;
-        continue;
-      }
-      r.normal = KT::to_vector(rn);
-      d.projected.push_back(r);
-      if(!agrees_with_normals(d, f, P, rn)) { // a good projection, but a fit not to blend
-        ++d.unblended;
-        continue;
-      }
       f.point = P; // converted to seed-local coordinates below
       f.normal = rn;
-      seed_points.push_back(r.point);
+      // the fit must pass through its own projection
+      return P.allFinite() && f.origin.allFinite() && f.axes.allFinite() && up.allFinite() && rn.allFinite() &&
+             std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h;
+    };
+    for(std::size_t j = 0; j < results.size(); ++j) {
+      Result& r = results[j];
+      Fit f;
+      V P, rn;
+      const bool usable = make_fit(r, f, P, rn);
+      if(usable) {
+        r.normal = KT::to_vector(rn);
+        d.projected.push_back(r);
+      }
+      Point_3 point = r.point;
+      if(!usable || !agrees_with_normals(d, f, P, rn)) { // a fit not to blend: P_L's, if it agrees
+        Fit g;
+        V Pg, ng;
+        if(j < levin_results.size() && levin_results[j].is_success() &&
+           levin_results[j].energy <= d.fallback_threshold &&
+           make_fit(levin_results[j], g, Pg, ng) && agrees_with_normals(d, g, Pg, ng)) {
+          f = g;
+          point = levin_results[j].point;
+          ++d.levin_fallbacks;
+        } else {
+          ++(usable ? d.unblended : d.failed);
+          continue;
+        }
+      }
+      seed_points.push_back(point);
       fits.push_back(f);
     }
     if(fits.size() < 2) {
@@ -654,7 +697,8 @@ private:
   // often. False when cancelled.
   template <class ConcurrencyTag>
   static bool project_seeds(Data& d, ConcurrencyTag, const std::vector<Point_3>& queries, std::vector<Result>& results,
-                            const std::function<bool(double)>& callback, double start) {
+                            std::vector<Result>& levin_results, const std::function<bool(double)>& callback,
+                            double start) {
     const std::size_t chunk = 128;
     const auto project_all = [&](const auto& projection, const std::vector<Point_3>& q, std::vector<Result>& out,
                                  double from, double to) {
@@ -694,6 +738,8 @@ private:
       }
       const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
       d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
+      const double lambda = d.options.fallback_noise_factor;
+      d.fallback_threshold = (std::max)(d.threshold, lambda * lambda * noise);
       d.seed_projection.emplace(d.projection, d.threshold);
       std::vector<std::size_t> others;
       std::vector<Point_3> other_queries;
@@ -705,6 +751,7 @@ private:
       d.operator_seeds = others.size();
       std::vector<Result> projected;
       if(!project_all(*d.seed_projection, other_queries, projected, 0.05, 0.95)) return false;
+      levin_results = results; // P_L's fits: the fall-back of the operator's fits not to blend
       for(std::size_t k = 0; k < others.size() && k < projected.size(); ++k) results[others[k]] = std::move(projected[k]);
       return true;
     }

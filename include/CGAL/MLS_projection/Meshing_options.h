@@ -57,6 +57,12 @@ struct Implicit_function_options {
   /// none of its 488 seeds went to the operator and its edges were lost). On noisy data of
   /// large smooth parts, 3 sends fewer seeds to the operator.
   double screening_noise_factor = 0.;
+  /// Where the operator's fit of a seed is not blended (see `MLS_implicit_function`, "Seeds"),
+  /// P_L's fit of the seed is blended in its place when its weighted RMS residual is at most this
+  /// factor times the RMS residual of the 5th percentile of the seeds (the noise level; about 0
+  /// without noise, so that no crease is rounded by a quadratic), and it passes the same test.
+  /// 0: never.
+  double fallback_noise_factor = 3.;
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
   /// no normals): `pca_estimate_normals` and `mst_orient_normals`.
   int normal_neighbors = 18;
@@ -77,9 +83,10 @@ struct Meshing_report {
   /// than by `mst_orient_normals` (0 when the input has normals).
   std::size_t normals_by_fallback = 0;
   /// Seeds whose local fits are blended, seeds projected but not blended (see
-  /// `MLS_implicit_function::number_of_unblended_seeds()`), and failed seeds.
+  /// `MLS_implicit_function::number_of_unblended_seeds()`), failed seeds, and the blended seeds
+  /// whose fit is P_L's in place of the operator's (`number_of_levin_fallbacks()`).
   /// @{
-  std::size_t seeds = 0, unblended_seeds = 0, failed_seeds = 0;
+  std::size_t seeds = 0, unblended_seeds = 0, failed_seeds = 0, levin_fallback_seeds = 0;
   /// @}
   /// Seeds projected by the closest-point operator (the others by P_L, see
   /// `Implicit_function_options::levin_screening`).
@@ -91,16 +98,21 @@ struct Meshing_report {
   /// Points projected by the feature detection (helper points and polyline vertices).
   std::size_t feature_queries = 0;
   /// Mesh_3 failed with the feature polylines (a CGAL error, e.g. on polylines too close to each
-  /// other that `detect_sharp_features()` did not separate): the mesh was made without them, so
-  /// no feature is protected.
-  bool features_dropped = false;
+  /// other that `detect_sharp_features()` did not separate), or did not finish within
+  /// `Meshing_options::feature_evaluation_budget` (then `feature_budget_exceeded` is set too): the
+  /// mesh was made without them, so no feature is protected.
+  /// @{
+  bool features_dropped = false, feature_budget_exceeded = false;
+  /// @}
   /// The criteria used.
   /// @{
   double facet_size = 0, facet_distance = 0;
   /// @}
   /// Evaluations of the implicit function by the mesher, and the limit it ran under (see
   /// `Meshing_options::max_evaluations`).
+  /// @{
   std::size_t evaluations = 0, max_evaluations = 0;
+  /// @}
   /// Wall-clock seconds of the stages.
   /// @{
   double seconds_normals = 0, seconds_seeds = 0, seconds_features = 0, seconds_meshing = 0;
@@ -157,6 +169,12 @@ struct Meshing_options {
   /// number, \f$250\,n\,(s/\mathrm{size})^2\f$ for \f$n\f$ points of average spacing \f$s\f$, at least
   /// \f$10^6\f$ (normal runs use 1 to 2 times the expected number).
   std::size_t max_evaluations = 0;
+  /// Mesh_3 with the feature polylines is stopped after this many times the expected number of
+  /// evaluations (see `max_evaluations`; normal runs use 1 to 2 times), and the surface is meshed
+  /// again without them (`Meshing_report::feature_budget_exceeded`): its refinement around a
+  /// protected polyline can go on without end (a sampled solid with a hole across a crease).
+  /// 0: no such budget.
+  double feature_evaluation_budget = 10;
   /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the
   /// time limit"), after this many seconds of meshing; 0 (default): no limit. Mesh_3's refinement
   /// can also loop without evaluating the function (in its manifold facet refinement, see the

@@ -203,6 +203,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.operator_seeds = function.number_of_operator_seeds();
     out.unblended_seeds = function.number_of_unblended_seeds();
     out.failed_seeds = function.number_of_failed_seeds();
+    out.levin_fallback_seeds = function.number_of_levin_fallbacks();
     if(function.status() == Function::Status::CANCELLED) return fail("cancelled");
     if(!function.is_valid()) return fail("no implicit function (too few seeds could be projected: degenerate data)");
     const double h = function.bandwidth();
@@ -256,6 +257,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
                            : std::size_t((std::max)(1e6, 100. * in.expected_evaluations));
     out.max_evaluations = in.max_evaluations;
     in.max_seconds = options.max_meshing_seconds;
+    in.feature_budget = options.feature_evaluation_budget;
     in.callback = slice("meshing", 0.6, 0.98);
     out.facet_size = in.facet_size;
     out.facet_distance = in.facet_distance;
@@ -273,6 +275,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.seconds_meshing = since(t_meshing);
     out.evaluations = r.evaluations;
     out.features_dropped = r.features_dropped;
+    out.feature_budget_exceeded = r.feature_budget_exceeded;
     if(!r.success) return fail(r.cancelled ? "cancelled" : r.message);
     if(!report("output", 0.98, 1., 1.)) return fail("cancelled");
     return true;

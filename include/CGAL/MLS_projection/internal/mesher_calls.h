@@ -76,6 +76,9 @@ struct Mesher_input {
   double expected_evaluations = 1e6;
   /// The mesher is stopped after this many evaluations (0: no limit): the run then fails.
   std::size_t max_evaluations = 0;
+  /// Mesh_3 with polylines: the budget of evaluations, in units of `expected_evaluations`, after
+  /// which it meshes again without them (0: none).
+  double feature_budget = 10;
   /// The mesher is stopped after this many seconds (0: no limit): the run then fails.
   double max_seconds = 0;
 };
@@ -84,8 +87,10 @@ struct Mesher_input {
 struct Mesher_report {
   bool success = false;
   bool cancelled = false;
-  /// Mesh_3 failed with the polylines and the mesh was made without them.
+  /// Mesh_3 failed with the polylines, or exceeded its budget of evaluations with them
+  /// (`feature_budget_exceeded`), and the mesh was made without them.
   bool features_dropped = false;
+  bool feature_budget_exceeded = false;
   std::size_t evaluations = 0;
   const char* message = "";
 };
@@ -286,6 +291,14 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   C3t3 c3t3;
   const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
   if(has_features) {
+    // The run with polylines gets a budget of `feature_budget` times the expected evaluations
+    // (normal runs use 1 to 2 times): Mesh_3's refinement around a protected polyline can go on
+    // without end (seen on a sampled solid with a hole across a crease: 9 million evaluations in
+    // 300 s; without the polylines, 1.8 s). Beyond it, the surface is meshed again without them.
+    const std::size_t user_limit = monitor.limit;
+    const std::size_t budget = std::size_t(in.feature_budget * monitor.expected);
+    const bool budgeted = in.feature_budget > 0 && (user_limit == 0 || budget < user_limit);
+    if(budgeted) monitor.limit = budget;
     try {
       c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
                                params::manifold(), options);
@@ -293,6 +306,16 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
       report.features_dropped = true;
       has_features = false;
     }
+    if(budgeted && monitor.limit_hit.load() && !monitor.time_hit.load()) {
+      report.features_dropped = true;
+      report.feature_budget_exceeded = true;
+      has_features = false;
+      c3t3 = C3t3();
+      monitor.count.store(0);
+      monitor.limit_hit.store(false);
+      monitor.stop.store(false);
+    }
+    monitor.limit = user_limit;
   }
   if(!has_features)
     c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
