@@ -1,4 +1,4 @@
-// Data of the 2D figures of the manual (the paper's Figures 1, 2, 4 and 5), written as CSV
+// Data of the 2D figures of the manual (the paper's Figures 1, 2, 4, 5 and 8), written as CSV
 // files into the directory given as first argument; the plots are drawn by plot_figures.py.
 // Run by scripts/figures. Everything is deterministic (fixed seeds).
 //
@@ -386,6 +386,44 @@ void collapse_region() {
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Figure 8: completion of a gap, with a smooth prior (quadratic space) and a wedge prior.
+
+void gap_completion() {
+  // A noiseless 70-degree wedge sampled every 0.01 on rays of length 1, without the samples within
+  // 0.1 of the apex (a gap of 0.2 around the corner); h = 0.07 (Gaussian weight truncated at 4h),
+  // so that the neighbourhoods of the gap reach the data on both rays.
+  const Wedge wedge{70 * pi / 180, 0.01, 1.};
+  const double gap = 0.1;
+  std::vector<Point> pts;
+  for(const Point& p : wedge.sample())
+    if(eig(p).norm() > gap) pts.push_back(p);
+  MLS::Projection_options o;
+  o.bandwidth = 0.07;
+  const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PQ(pts, o);
+  const MLS::Unified_projection<K, MLS::Wedge_fan_function_space<2>> PW(PQ.shared_samples(), o);
+  const double h = PQ.bandwidth();
+  auto samples = open_csv("gap_samples.csv", "x,y,h,gap");
+  for(const Point& p : pts) samples << p.x() << "," << p.y() << "," << h << "," << gap << "\n";
+  // Queries: a grid of spacing h/4 within h of the wedge, up to 0.35 along the rays; and the
+  // bisector from 1.5h below to 1.5h above the apex, where the reconstruction crosses it.
+  std::vector<V2> grid, bisector;
+  for(double x = -0.3; x <= 0.3; x += h / 4)
+    for(double y = -0.1; y <= 0.35; y += h / 4) {
+      const V2 q(x, y);
+      if(wedge.distance(q) <= h && wedge.foot(q) <= 0.35) grid.push_back(q);
+    }
+  for(int i = 0; i <= 30; ++i) bisector.push_back(V2(0, h * (-1.5 + 3. * i / 30)));
+  auto f = open_csv("gap_projections.csv", "operator,set,qx,qy,px,py,success,on_feature,distance,status");
+  const auto dist = [&](const V2& x) { return wedge.distance(x); };
+  project_all(f, "PU_quadratic", PQ, grid, "grid", dist);
+  project_all(f, "PU_wedge", PW, grid, "grid", dist);
+  project_all(f, "PU_quadratic", PQ, bisector, "bisector", dist);
+  project_all(f, "PU_wedge", PW, bisector, "bisector", dist);
+  std::cout << "gap completion: 70 degrees, spacing 0.01, gap radius " << gap << ", h=" << h << ", " << grid.size()
+            << " queries" << std::endl;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -401,5 +439,6 @@ int main(int argc, char** argv) {
   if(want("wedge")) wedge_reconstruction();
   if(want("curve")) noisy_curve_reconstruction();
   if(want("collapse")) collapse_region();
+  if(want("gap")) gap_completion();
   return EXIT_SUCCESS;
 }

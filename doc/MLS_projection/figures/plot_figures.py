@@ -122,17 +122,17 @@ def switch():
 # ------------------------------------------------------------------------------------------
 # Figures 1 and 5: reconstructions with projection paths.
 def reconstruction(samples_file, proj_file, true_xy, out, title, path_set, curve_set, xlim, ylim, near,
-                   figsize=(15, 5.6), zoom=None):
+                   figsize=(15, 5.6), zoom=None, ops=OPS, extra=None):
     samples = read(samples_file)
     h = float(samples[0]["h"])
     sx = [float(r["x"]) for r in samples]
     sy = [float(r["y"]) for r in samples]
     proj = read(proj_file)
     rows = 2 if zoom else 1
-    fig, axes = plt.subplots(rows, 3, figsize=figsize, constrained_layout=True, squeeze=False,
+    fig, axes = plt.subplots(rows, len(ops), figsize=figsize, constrained_layout=True, squeeze=False,
                              gridspec_kw={"height_ratios": [1, 1.6] if zoom else [1]})
     stats = {}
-    for col, (op, label, color) in enumerate(OPS):
+    for col, (op, label, color) in enumerate(ops):
         for row in range(rows):
             ax = axes[row, col]
             mine = [r for r in proj if r["operator"] == op]
@@ -158,6 +158,8 @@ def reconstruction(samples_file, proj_file, true_xy, out, title, path_set, curve
             stats[op] = (d.max(), np.sqrt(np.mean(d ** 2)), dn.max() if len(dn) else float("nan"), fails, len(feat),
                          len(mine), far, dict(statuses), np.median(d))
             ax.set_aspect("equal")
+            if extra:
+                extra(ax)
             if row == 0:
                 ax.set_title("%s\nmax %.3f h, RMS %.3f h" % (label, d.max(), np.sqrt(np.mean(d ** 2))), fontsize=11)
                 ax.set_xlim(*xlim)
@@ -276,6 +278,32 @@ def collapse():
     save(fig, "collapse_region.png")
 
 
+def gap_completion():
+    samples = read("gap_samples.csv")
+    h, gap = float(samples[0]["h"]), float(samples[0]["gap"])
+    phi = math.radians(70)
+    t = np.array([1, 0, 1])
+    true_xy = (t * np.array([-math.sin(phi / 2), 0, math.sin(phi / 2)]), t * math.cos(phi / 2))
+
+    def gap_circle(ax):
+        ax.add_patch(plt.Circle((0, 0), gap, fill=False, ls="--", ec="0.4", lw=0.8, zorder=1))
+
+    stats = reconstruction("gap_samples.csv", "gap_projections.csv", true_xy, "gap_completion.png",
+                           r"Wedge of $70^\circ$ without samples within %.2g of its apex (dashed), $h$ = %.3g: queries "
+                           r"within $h$ (grey: query $\to$ projection)" % (gap, h), "grid", "grid", (-0.3, 0.3),
+                           (-0.12, 0.36), lambda r: math.hypot(float(r["qx"]), float(r["qy"])) < gap + h,
+                           figsize=(11, 5.2), ops=OPS[1:], extra=gap_circle)
+    # Where the reconstruction crosses the bisector: the projections of the queries on the bisector
+    # below the apex (outside the wedge), whose closest point on the true wedge is the apex.
+    proj = read("gap_projections.csv")
+    for op, _, _ in OPS[1:]:
+        below = [r for r in proj if r["operator"] == op and r["set"] == "bisector" and float(r["qy"]) <= 0]
+        apex = [math.hypot(float(r["px"]), float(r["py"])) / h for r in below]
+        print("gap_completion %s: %d bisector queries below the apex projected within %.3g h to %.3g h of the apex"
+              % (op, len(apex), min(apex), max(apex)))
+    return stats
+
+
 def thumbnail():
     # The package's picture: the wedge reconstructions of P_L and P_U (wedge), small.
     proj = read("wedge_projections.csv")
@@ -294,7 +322,7 @@ def thumbnail():
 if __name__ == "__main__":
     only = os.environ.get("MLS_FIGURES_ONLY", "")
     steps = [("landscape", landscapes), ("switch", switch), ("wedge", wedge_reconstruction),
-             ("curve", curve_reconstruction), ("collapse", collapse), ("wedge", thumbnail)]
+             ("curve", curve_reconstruction), ("collapse", collapse), ("wedge", thumbnail), ("gap", gap_completion)]
     for name, fn in steps:
         if not only or name in only:
             fn()
