@@ -15,6 +15,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -43,6 +44,10 @@ struct Minimizer_settings {
   const Eigen::VectorXd* watched = nullptr;
   double watch_tolerance = 0;
   double watch_energy_tolerance = 1e-2;
+  // ... or by less than this fraction of the root of that sum (the RMS residual when the residuals
+  // are sqrt(w_i / W) r_i), when larger: on noisy data, the answer is not known better than the
+  // noise allows, and the steps crawl along a flat valley long after it stopped changing.
+  double watch_relative = 0;
   int watch_evaluations = 10;
 };
 
@@ -78,7 +83,7 @@ struct Residual_functor {
       if(value < settings.absolute_value) return -1;
     }
     if(improved && settings.watch_tolerance > 0 && settings.watched && ++since_watch_mark_ >= settings.watch_evaluations) {
-      if(watch_mark_.size() == best_watched_.size() && (best_watched_ - watch_mark_).norm() < settings.watch_tolerance &&
+      if(watch_mark_.size() == best_watched_.size() && (best_watched_ - watch_mark_).norm() < watch_tolerance() &&
          best_ > watch_mark_value_ * (1. - settings.watch_energy_tolerance))
         return -1;
       watch_mark_ = best_watched_;
@@ -93,6 +98,11 @@ struct Residual_functor {
       return -1;
     }
     return 0;
+  }
+
+  // The watched quantity's tolerance at the lowest sum of squares so far.
+  double watch_tolerance() const {
+    return (std::max)(settings.watch_tolerance, settings.watch_relative * std::sqrt(best_));
   }
 
   const ResidualFunction* f_;
