@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -245,29 +246,30 @@ MLS_TEST(edge_3d_is_reproduced_exactly) {
 // always exact (measured: 4 of 3444 queries in 6 h x 6 h grids at 30-120 degrees, at most
 // 2.9e-6 h off, Wendland's weight).
 MLS_TEST(edge_3d_is_reproduced_exactly_on_a_dense_grid_across_the_crease) {
-  for(const MLS::Weight_kind weight : {MLS::Weight_kind::WENDLAND, MLS::Weight_kind::GAUSSIAN})
-    for(const double degrees : {45., 60.}) {
-      if(weight == MLS::Weight_kind::GAUSSIAN && degrees != 60.) continue; // the only failure measured
-      const Edge_3 edge{degrees * M_PI / 180};
-      MLS::Projection_options o;
-      o.weight = weight;
-      MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(edge.sample(), o);
-      const double h = PU.bandwidth();
-      double worst = 0;
-      int queries = 0;
-      for(int a = -20; a <= 20; ++a)
-        for(int b = -20; b <= 20; ++b) {
-          const V3 q(0.013, 0.1 * h * a, 0.1 * h * b);
-          if(edge.distance(q) > 0.5 * h || V2(q[1], q[2]).norm() > 2 * h) continue;
-          ++queries;
-          const auto res = PU.project(Epick::Point_3(q[0], q[1], q[2]));
-          MLS_CHECK(res.is_success());
-          worst = std::max(worst, edge.distance(eig(res.point)));
-        }
-      std::cout << "  " << degrees << " deg edge, " << (weight == MLS::Weight_kind::GAUSSIAN ? "Gaussian" : "Wendland")
-                << ", " << queries << " queries: max distance " << worst / h << " h\n";
-      MLS_CHECK_LE(worst, 1e-9);
-    }
+  // the Gaussian weight at 60 degrees only: its one failure measured before the fix
+  const std::pair<MLS::Weight_kind, double> cases[] = {
+    {MLS::Weight_kind::WENDLAND, 45.}, {MLS::Weight_kind::WENDLAND, 60.}, {MLS::Weight_kind::GAUSSIAN, 60.}};
+  for(const auto& [weight, degrees] : cases) {
+    const Edge_3 edge{degrees * M_PI / 180};
+    MLS::Projection_options o;
+    o.weight = weight;
+    MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(edge.sample(), o);
+    const double h = PU.bandwidth();
+    double worst = 0;
+    int queries = 0;
+    for(int a = -20; a <= 20; ++a)
+      for(int b = -20; b <= 20; ++b) {
+        const V3 q(0.013, 0.1 * h * a, 0.1 * h * b);
+        if(edge.distance(q) > 0.5 * h || V2(q[1], q[2]).norm() > 2 * h) continue;
+        ++queries;
+        const auto res = PU.project(Epick::Point_3(q[0], q[1], q[2]));
+        MLS_CHECK(res.is_success());
+        worst = std::max(worst, edge.distance(eig(res.point)));
+      }
+    std::cout << "  " << degrees << " deg edge, " << (weight == MLS::Weight_kind::GAUSSIAN ? "Gaussian" : "Wendland")
+              << ", " << queries << " queries: max distance " << worst / h << " h\n";
+    MLS_CHECK_LE(worst, 1e-9);
+  }
 }
 
 // A bandwidth just above the sample spacing: on a grid, C(r) can then be further than h/2 from
