@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -55,6 +56,7 @@ inline void check(bool ok, const char* expr, const char* file, int line, const s
 
 // Runs the tests whose name contains argv[1] (all without argument), except those named in the
 // environment variable MLS_TEST_SKIP (names separated by commas), which are reported as skipped.
+// Each test's line gives its wall time (what the sanitizer stages' skip lists are chosen by).
 inline int run_all(int argc, char** argv) {
   int passed = 0, failed = 0;
   const char* skip = std::getenv("MLS_TEST_SKIP");
@@ -66,9 +68,11 @@ inline int run_all(int argc, char** argv) {
       continue;
     }
     const int before = failures();
+    const auto start = std::chrono::steady_clock::now();
     t.body();
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
     const bool ok = failures() == before;
-    std::cout << (ok ? "[ ok ] " : "[FAIL] ") << t.name << std::endl;
+    std::cout << (ok ? "[ ok ] " : "[FAIL] ") << t.name << " (" << fmt(seconds.count()) << " s)" << std::endl;
     (ok ? passed : failed)++;
   }
   std::cout << passed << " passed, " << failed << " failed" << std::endl;
