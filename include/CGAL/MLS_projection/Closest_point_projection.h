@@ -204,9 +204,31 @@ public:
     }
     Fit best = select(fits);
     if(best.valid && !best.converged) {
+      const Fit leader = best;
       Fit fit = minimize(rs, best.frame, best.c, unit, bound);
       iterations += fit.iterations;
       if(fit.valid) best = fit;
+      // The race can pick a start that ends at a small but non-zero energy while another start
+      // reaches the exact fit (noiseless cube of the benchmark: a corner fan stopped at 4.8e-7 h^2,
+      // 6.3e-7 h off the face, where Levin's frame, second in the race, reached 3e-29 h^2). When
+      // the converged leader nearly fits the data, the starts whose race values were within
+      // `rival_factor` of the leader's run to convergence too, and the selection is made again.
+      // On noisy data (energies above `near_exact_energy`) this never happens: no time is spent.
+      best.supported = best.valid && is_supported(best, unit);
+      if(best.valid && best.value > exact_value && best.energy < near_exact_energy) {
+        std::vector<Fit> finals{best};
+        for(const Fit& f : fits) {
+          if(!f.valid || f.converged || f.value > rival_factor * leader.value ||
+             (f.frame.origin == leader.frame.origin && f.c == leader.c))
+            continue;
+          Fit rival = minimize(rs, f.frame, f.c, unit, bound);
+          iterations += rival.iterations;
+          if(!rival.valid) continue;
+          rival.supported = is_supported(rival, unit);
+          finals.push_back(rival);
+        }
+        best = select(finals);
+      }
     }
     // The weights are centred on C(r): make sure the gathered ball covers their support there.
     for(int round = 0; round < 3 && best.valid && !unit.covers(best.C, support); ++round) {
@@ -664,6 +686,12 @@ protected:
   static constexpr int race_evaluations = 30;
   // A sum of squares (units of h^2) below which a fit is exact: every residual below 1e-13 h.
   static constexpr double exact_value = 1e-26;
+  // An energy (units of h^2, an RMS distance of 1e-3 h) below which a converged fit nearly fits
+  // the data, and the race factor of the rivals then run to convergence (see project()).
+  // Measured on the benchmark (P_U wedge, 100 queries): on the noiseless cube 6% more iterations,
+  // on the torus and the noisy cube none.
+  static constexpr double near_exact_energy = 1e-6;
+  static constexpr double rival_factor = 10;
 
   static Projection_options with_bandwidth(Projection_options options, double h) {
     if(h > 0) options.bandwidth = h; // derived once, by the base
