@@ -214,8 +214,8 @@ public:
       // the converged leader nearly fits the data, the starts whose race values were within
       // `rival_factor` of the leader's run to convergence too, and the selection is made again.
       // On noisy data (energies above `near_exact_energy`) this never happens: no time is spent.
-      best.supported = best.valid && is_supported(best, unit);
       if(best.valid && best.value > exact_value && best.energy < near_exact_energy) {
+        best.supported = is_supported(best, unit);
         std::vector<Fit> finals{best};
         for(const Fit& f : fits) {
           if(!f.valid || f.converged || f.value > rival_factor * leader.value ||
@@ -686,10 +686,10 @@ protected:
   static constexpr int race_evaluations = 30;
   // A sum of squares (units of h^2) below which a fit is exact: every residual below 1e-13 h.
   static constexpr double exact_value = 1e-26;
-  // An energy (units of h^2, an RMS distance of 1e-3 h) below which a converged fit nearly fits
-  // the data, and the race factor of the rivals then run to convergence (see project()).
-  // Measured on the benchmark (P_U wedge, 100 queries): on the noiseless cube 6% more iterations,
-  // on the torus and the noisy cube none.
+  // An energy (units of h^2; an RMS distance of 1e-3 h) below which a converged fit nearly fits
+  // the data, and the factor of the leader's race value within which its rivals then run to
+  // convergence (see project()). Measured on the benchmark's 100 queries: P_U wedge 6% more
+  // iterations on the noiseless cube, none on the torus and the noisy cube.
   static constexpr double near_exact_energy = 1e-6;
   static constexpr double rival_factor = 10;
 
