@@ -157,6 +157,9 @@ mls_tools::Argument_parser make_parser(Settings& s) {
     s.options.weight = mls_tools::parse_choice<CGAL::MLS::Weight_kind>(
       "--weight", v, {{"gaussian", CGAL::MLS::Weight_kind::GAUSSIAN}, {"wendland", CGAL::MLS::Weight_kind::WENDLAND}});
   });
+  parser.add_flag("--no-warm-starts",
+                  "project each query independently (default: continue from the fit of a nearby query, see the manual)",
+                  [&s] { s.options.warm_starts = false; });
   parser.add_flag("--quiet", "no progress bar, only the final summary line", [&s] { s.quiet = true; });
   return parser;
 }

@@ -84,12 +84,22 @@ public:
   }
 
   /// Projects `query` with both operators and keeps the sharp result when `prefers_sharp()`.
-  Result project(const Point& query) const {
-    Result smooth = smooth_.project(query);
-    Result sharp = sharp_.project(query);
-    Result& kept = prefers_sharp(smooth, sharp) ? sharp : smooth;
-    kept.iterations = smooth.iterations + sharp.iterations;
-    return kept;
+  Result project(const Point& query) const { return choose(smooth_.project(query), sharp_.project(query)); }
+
+  /// The state of a sequence of warm-started projections: that of each operator.
+  struct Warm_start {
+    typename Smooth_projection::Warm_start smooth; ///< the smooth operator's
+    typename Sharp_projection::Warm_start sharp;   ///< the sharp operator's
+    /// Forgets the last fits.
+    void reset() {
+      smooth.reset();
+      sharp.reset();
+    }
+  };
+
+  /// The same with both operators warm-started (see `Closest_point_projection::project()`).
+  Result project(const Point& query, Warm_start& warm) const {
+    return choose(smooth_.project(query, warm.smooth), sharp_.project(query, warm.sharp));
   }
 
   /// Same as `project()`.
@@ -115,6 +125,13 @@ public:
   /// @}
 
 private:
+  // The result of the fit kept, with the iterations of both.
+  Result choose(Result smooth, Result sharp) const {
+    Result& kept = prefers_sharp(smooth, sharp) ? sharp : smooth;
+    kept.iterations = smooth.iterations + sharp.iterations;
+    return kept;
+  }
+
   static Projection_options with_bandwidth(Projection_options options, double h) {
     if(h > 0) options.bandwidth = h; // derived once, by the smooth operator
     return options;

@@ -32,6 +32,9 @@ struct Projection_options {
   /// The optimiser stops when the relative decrease of the energy or the relative step
   /// falls below this value.
   double tolerance = 1e-12;
+  /// Whether `project_points()` continues each projection from the fit of a nearby query, with
+  /// the operators that can (`Closest_point_projection`, `Mixed_projection`).
+  bool warm_starts = true;
 };
 
 } // namespace MLS

@@ -4,7 +4,11 @@
 #ifndef CGAL_MLS_PROJECTION_PROJECT_POINTS_H
 #define CGAL_MLS_PROJECTION_PROJECT_POINTS_H
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
@@ -14,6 +18,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
@@ -24,12 +29,82 @@ namespace CGAL {
 namespace MLS {
 
 /// \ingroup PkgMLSProjectionFunctions
+/// The number of consecutive queries along the Hilbert curve that `project_points()` projects
+/// with warm starts, the first one cold.
+constexpr std::size_t warm_start_block = 64;
+
+namespace internal {
+
+template <class P, class = void> struct has_warm_start : std::false_type {};
+template <class P> struct has_warm_start<P, std::void_t<typename P::Warm_start>> : std::true_type {};
+
+// f(i) for i in [begin, end), in parallel (chunks of `grain`) when the tag asks for it.
+template <class ConcurrencyTag, class F>
+void for_each_index(std::size_t begin, std::size_t end, std::size_t grain, const F& f) {
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(std::is_convertible<ConcurrencyTag, Parallel_tag>::value) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i) f(i);
+    });
+    return;
+  }
+#endif
+  for(std::size_t i = begin; i < end; ++i) f(i);
+}
+
+// project_points() for operators with warm starts (see there): `out[i]` is the result of
+// `points[i]`. False when the callback cancelled.
+template <class ConcurrencyTag, class Projection, class Point>
+bool project_warm(const Projection& projection, const std::vector<Point>& points, std::vector<typename Projection::Result>& out,
+                  const std::function<bool(double)>& callback) {
+  if(points.empty()) return true;
+  using Kernel = typename Kernel_traits<Point>::Kernel;
+  using Map = Pointer_property_map<Point>;
+  using Traits = std::conditional_t<Ambient_dimension<Point>::value == 2, Spatial_sort_traits_adapter_2<Kernel, typename Map::const_type>,
+                                    Spatial_sort_traits_adapter_3<Kernel, typename Map::const_type>>;
+  // the finite queries along a Hilbert curve (the others fail at once: they go last)
+  std::vector<std::size_t> order, invalid;
+  order.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    bool finite = true;
+    for(int j = 0; j < Ambient_dimension<Point>::value; ++j) finite = finite && std::isfinite(CGAL::to_double(points[i][j]));
+    (finite ? order : invalid).push_back(i);
+  }
+  hilbert_sort(order.begin(), order.end(), Traits(make_property_map(points)));
+  order.insert(order.end(), invalid.begin(), invalid.end());
+
+  const std::size_t n = order.size();
+  const std::size_t batch = 64 * warm_start_block;
+  for(std::size_t begin = 0; begin < n; begin += batch) {
+    const std::size_t end = (std::min)(n, begin + batch);
+    const std::size_t blocks = (end - begin + warm_start_block - 1) / warm_start_block;
+    for_each_index<ConcurrencyTag>(0, blocks, 1, [&](std::size_t b) {
+      typename Projection::Warm_start warm;
+      const std::size_t first = begin + b * warm_start_block, last = (std::min)(end, first + warm_start_block);
+      for(std::size_t k = first; k < last; ++k) out[order[k]] = projection.project(points[order[k]], warm);
+    });
+    if(callback && !callback(double(end) / double(n)) && end < n) return false;
+  }
+  return true;
+}
+
+} // namespace internal
+
+/// \ingroup PkgMLSProjectionFunctions
 /// Projects every point of `queries` with `projection` and writes one result per query,
 /// in query order, to `results`.
 ///
-/// Each projection is independent and deterministic, so the results are bit-identical whatever
-/// the concurrency tag and the number of threads. The queries are processed in batches; after
-/// each batch, the `callback` is called from the calling thread with the fraction done.
+/// Operators with warm starts (those with a `Warm_start` type: `Closest_point_projection`,
+/// `Mixed_projection`), unless their options' `warm_starts` is `false`, visit the queries along a
+/// Hilbert curve in blocks of `warm_start_block` consecutive queries: the first query of a block
+/// is projected cold, each next one continues from the fit of the one before (see
+/// `Closest_point_projection::project()`). The blocks depend only on the queries, so the results
+/// are bit-identical whatever the concurrency tag and the number of threads; a query's result
+/// can depend on the other queries, within the optimiser's tolerance. Other operators project
+/// each query independently.
+///
+/// The queries are processed in batches; after each batch, the `callback` is called from the
+/// calling thread with the fraction done.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
 /// \param projection any projection operator of this package (e.g. `Levin_projection`)
@@ -37,8 +112,9 @@ namespace MLS {
 /// \param results an output iterator accepting `Projection::Result`
 /// \param np optional named parameters: `point_map` (the queries' point map, default identity)
 ///        and `callback` (a `std::function<bool(double)>`; returning `false` cancels)
-/// \return `true` when every query was projected, `false` when the callback cancelled
-///         (then only the results of the completed batches were written)
+/// \return `true` when every query was projected, `false` when the callback cancelled (then
+///         only the results of the completed batches were written; with warm starts, whose
+///         batches follow the Hilbert curve, none)
 template <class ConcurrencyTag, class Projection, class QueryRange, class OutputIterator,
           class NamedParameters = parameters::Default_named_parameters>
 bool project_points(const Projection& projection, const QueryRange& queries, OutputIterator results,
@@ -61,21 +137,20 @@ bool project_points(const Projection& projection, const QueryRange& queries, Out
   for(const auto& v : queries) points.push_back(Point(get(point_map, v)));
 
   const std::size_t n = points.size();
+  if constexpr(internal::has_warm_start<Projection>::value) {
+    if(projection.options().warm_starts) {
+      std::vector<Result> out(n);
+      if(!internal::project_warm<ConcurrencyTag>(projection, points, out, callback)) return false;
+      std::move(out.begin(), out.end(), results);
+      return true;
+    }
+  }
   const std::size_t batch = 4096;
   std::vector<Result> out;
   for(std::size_t begin = 0; begin < n; begin += batch) {
     const std::size_t end = (std::min)(n, begin + batch);
     out.resize(end - begin);
-#ifdef CGAL_LINKED_WITH_TBB
-    if constexpr(std::is_convertible<ConcurrencyTag, Parallel_tag>::value) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 8), [&](const tbb::blocked_range<std::size_t>& r) {
-        for(std::size_t i = r.begin(); i != r.end(); ++i) out[i - begin] = projection.project(points[i]);
-      });
-    } else
-#endif
-    {
-      for(std::size_t i = begin; i < end; ++i) out[i - begin] = projection.project(points[i]);
-    }
+    internal::for_each_index<ConcurrencyTag>(begin, end, 8, [&](std::size_t i) { out[i - begin] = projection.project(points[i]); });
     results = std::move(out.begin(), out.end(), results);
     if(callback && !callback(double(end) / double(n)) && end < n) return false;
   }
