@@ -27,7 +27,12 @@
 //   - mixed:          Mixed_projection<Epick, 3> (P_U quadratic and P_U wedge, the better kept),
 // reported per query, as ratios of CPU time per query to P_L quadratic and to jet measured in
 // the same run on the same input (their per-query cost is that of the whole input), and with the
-// accuracy of P_L and jet on the same subset for comparison.
+// accuracy of P_L and jet on the same subset for comparison. The queries of a random subset are
+// far apart: table 2 projects each one cold (Projection_options::warm_starts = false).
+// Table 3 (--warm-operators): project_points of every input point with warm starts (the default:
+// queries along a Hilbert curve, each continued from the fit of the one before), the way
+// mls_project and the mesher's seeds use the operators, reported per query as ratios to P_L
+// quadratic (table 1) and to the same operator's cold queries (table 2) of the same run.
 // Distances are to the exact surface. Wall times use std::chrono::steady_clock; the process CPU
 // time (getrusage, all threads) is reported next to them.
 //
@@ -274,6 +279,7 @@ struct Row {
   double project_cpu = -1;         // process CPU seconds of project alone
   double jet = -1, jet_cpu = -1;   // the jet times of the same input, for the ratios
   double levin_cpu_per_query = -1, jet_cpu_per_query = -1; // table 2's references
+  double cold_cpu_per_query = -1; // table 3: the same operator's table-2 CPU time per query
   Accuracy error;
   std::size_t failures = 0, not_converged = 0, on_feature = 0;
   bool has_status = false;
@@ -344,11 +350,12 @@ void print_full_table(const std::vector<Row>& rows, bool markdown) {
   print_cells(head, cells, 3, markdown);
 }
 
-void print_subset_table(const std::vector<Row>& rows, bool markdown) {
-  const std::vector<std::string> head = {"input",     "n",         "method",    "queries",   "build s",
-                                         "cpu ms/q",  "wall ms/q", "cpu/P_L",   "cpu/jet",   "mean dist",
-                                         "max dist",  "edge mean", "edge max",  "not conv",  "failed",
-                                         "on feature"};
+void print_subset_table(const std::vector<Row>& rows, bool markdown, bool warm = false) {
+  std::vector<std::string> head = {"input",     "n",         "method",    "queries",   "build s",
+                                   "cpu ms/q",  "wall ms/q", "cpu/P_L",   "cpu/jet",   "mean dist",
+                                   "max dist",  "edge mean", "edge max",  "not conv",  "failed",
+                                   "on feature"};
+  if(warm) head.insert(head.begin() + 9, "cold/warm");
   std::vector<std::vector<std::string>> cells;
   for(const Row& r : rows) {
     const double q = double(r.queries);
@@ -362,6 +369,9 @@ void print_subset_table(const std::vector<Row>& rows, bool markdown) {
                      scientific(r.error.feature_max), r.has_status ? std::to_string(r.not_converged) : "-",
                      r.has_status ? std::to_string(r.failures) : "-",
                      r.has_status ? std::to_string(r.on_feature) : "-"});
+    if(warm)
+      cells.back().insert(cells.back().begin() + 9,
+                          r.cold_cpu_per_query > 0 ? fixed(r.cold_cpu_per_query / cpu_per_query, 1) : std::string("-"));
   }
   print_cells(head, cells, 3, markdown);
 }
@@ -408,8 +418,9 @@ Row run_operator(const Input& input, const std::vector<Point>& queries, const ch
 }
 
 template <class Projection>
-std::function<std::unique_ptr<Projection>()> maker(const std::vector<Point>& points) {
-  return [&points] { return std::make_unique<Projection>(points); };
+std::function<std::unique_ptr<Projection>()> maker(const std::vector<Point>& points,
+                                                   const CGAL::MLS::Projection_options& options = {}) {
+  return [&points, options] { return std::make_unique<Projection>(points, options); };
 }
 
 Row run_jet(const Input& input, unsigned int k, double h) {
@@ -474,6 +485,8 @@ const std::vector<std::string> all_operators = {"single", "enriched", "unified-q
     << "  --subset N          queries of the closest-point operators per input (default 300; 0: none)\n"
     << "  --operators a,b,... closest-point operators among single, enriched, unified-quadratic,\n"
     << "                      unified-wedge, mixed (default: all)\n"
+    << "  --warm-operators .. the same for table 3, every input point with warm starts\n"
+    << "                      (default: unified-wedge,mixed; 'none': no table 3)\n"
     << "  --threads N         threads (default: all cores)\n"
     << "  --jet-k K           neighbours of jet_smooth_point_set (default 18)\n"
     << "  --noise SIGMA       noise of the torus (default 0.005)\n"
@@ -510,6 +523,26 @@ std::size_t parse_count(const std::string& s, const char* program, const std::st
   return std::size_t(v);
 }
 
+// The closest-point operator named `op` (see --operators) on `queries`, with `options`.
+Row run_named_operator(const std::string& op, const Input& input, const std::vector<Point>& queries, double h,
+                       const CGAL::MLS::Projection_options& options) {
+  using namespace CGAL::MLS;
+  const std::vector<Point>& points = input.points;
+  if(op == "single")
+    return run_operator(input, queries, "P_S quadratic", h,
+                        maker<Single_phase_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+  if(op == "enriched")
+    return run_operator(input, queries, "P_E quadratic", h,
+                        maker<Enriched_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+  if(op == "unified-quadratic")
+    return run_operator(input, queries, "P_U quadratic", h,
+                        maker<Unified_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+  if(op == "unified-wedge")
+    return run_operator(input, queries, "P_U wedge", h,
+                        maker<Unified_projection<Kernel, Wedge_fan_function_space<3>>>(points, options));
+  return run_operator(input, queries, "mixed", h, maker<Mixed_projection<Kernel, 3>>(points, options));
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -517,7 +550,7 @@ int main(int argc, char** argv) {
   std::size_t cube_size = 20000, subset_size = 300;
   double cube_noise = 0.02; // in units of h
   double solid_spacing = 0, solid_noise = 0.02; // --solid: the built-in solid's sample spacing (0: none)
-  std::vector<std::string> operators = all_operators;
+  std::vector<std::string> operators = all_operators, warm_operators = {"unified-wedge", "mixed"};
   int threads = 0; // 0: all cores
   unsigned int jet_k = 18;
   double noise = 0.005;
@@ -539,6 +572,13 @@ int main(int argc, char** argv) {
     else if(arg == "--operators") {
       operators = split(value());
       for(const std::string& o : operators)
+        if(std::find(all_operators.begin(), all_operators.end(), o) == all_operators.end())
+          usage(argv[0], "unknown operator '" + o + "'");
+    }
+    else if(arg == "--warm-operators") {
+      const std::string v = value();
+      warm_operators = v == "none" ? std::vector<std::string>() : split(v);
+      for(const std::string& o : warm_operators)
         if(std::find(all_operators.begin(), all_operators.end(), o) == all_operators.end())
           usage(argv[0], "unknown operator '" + o + "'");
     }
@@ -620,7 +660,7 @@ int main(int argc, char** argv) {
             << "distances are to the exact surface; 'input' rows are the sample itself\n"
             << std::endl;
 
-  std::vector<Row> full_rows, subset_rows;
+  std::vector<Row> full_rows, subset_rows, warm_rows;
   for(const Input& input : inputs) {
     const std::size_t n = input.points.size();
     // "edge mean" uses the noiseless sample's h
@@ -650,7 +690,7 @@ int main(int argc, char** argv) {
     full_rows.push_back(plane);
     full_rows.push_back(jet);
 
-    if(subset_size == 0 || operators.empty()) continue;
+    if(subset_size == 0 || (operators.empty() && warm_operators.empty())) continue;
     const std::vector<std::size_t> subset = random_subset(n, subset_size, seed + 2);
     std::vector<Point> queries;
     for(const std::size_t i : subset) queries.push_back(input.points[i]);
@@ -662,26 +702,24 @@ int main(int argc, char** argv) {
     sample_subset.project_cpu = -1;
     std::vector<Row> rows = {sample_subset, restricted(quadratic, input, subset, queries, h),
                              restricted(jet, input, subset, queries, h)};
+    CGAL::MLS::Projection_options cold;
+    cold.warm_starts = false;
     for(const std::string& op : operators) {
-      using namespace CGAL::MLS;
-      Row row;
-      if(op == "single")
-        row = run_operator(input, queries, "P_S quadratic", h,
-                           maker<Single_phase_projection<Kernel, Quadratic_function_space<3>>>(input.points));
-      else if(op == "enriched")
-        row = run_operator(input, queries, "P_E quadratic", h,
-                           maker<Enriched_projection<Kernel, Quadratic_function_space<3>>>(input.points));
-      else if(op == "unified-quadratic")
-        row = run_operator(input, queries, "P_U quadratic", h,
-                           maker<Unified_projection<Kernel, Quadratic_function_space<3>>>(input.points));
-      else if(op == "unified-wedge")
-        row = run_operator(input, queries, "P_U wedge", h,
-                           maker<Unified_projection<Kernel, Wedge_fan_function_space<3>>>(input.points));
-      else
-        row = run_operator(input, queries, "mixed", h, maker<Mixed_projection<Kernel, 3>>(input.points));
+      Row row = run_named_operator(op, input, queries, h, cold);
       std::cerr << tag << ": " << row.method << " done in " << row.build + row.project << " s ("
                 << 1e3 * row.project_cpu / double(row.queries) << " CPU ms per query)" << std::endl;
       rows.push_back(std::move(row));
+    }
+    for(const std::string& op : warm_operators) {
+      Row row = run_named_operator(op, input, all, h, CGAL::MLS::Projection_options());
+      std::cerr << tag << ": " << row.method << " with warm starts done in " << row.build + row.project << " s ("
+                << 1e3 * row.project_cpu / double(row.queries) << " CPU ms per query)" << std::endl;
+      row.levin_cpu_per_query = levin_per_query;
+      row.jet_cpu_per_query = jet_per_query;
+      for(const Row& r : rows)
+        if(r.method == row.method && r.project_cpu > 0) row.cold_cpu_per_query = r.project_cpu / double(r.queries);
+      row.outputs.clear();
+      warm_rows.push_back(std::move(row));
     }
     for(Row& r : rows) {
       r.levin_cpu_per_query = levin_per_query;
@@ -710,6 +748,13 @@ int main(int argc, char** argv) {
                  "and of jet on the same input, in the same run.\nedge mean/max: over the queries within 2h of a cube "
                  "edge. not conv: NOT_CONVERGED results (the closest-point operators' fall-back to P_L is counted "
                  "there too); on feature: results on a crease or apex."
+              << std::endl;
+  }
+  if(!warm_rows.empty()) {
+    std::cout << "\nTable 3: every input point projected with project_points and warm starts (default options)\n";
+    print_subset_table(warm_rows, markdown, true);
+    std::cout << "\ncpu/P_L, cpu/jet: as in table 2; cold/warm = table 2's cpu ms/q of the same operator on the same "
+                 "input (cold, random queries) over this row's."
               << std::endl;
   }
   return 0;
