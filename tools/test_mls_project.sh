@@ -567,7 +567,7 @@ operators_group() {
     cmp -s "$DIR/t1.xyz" "$DIR/t2.xyz" && cmp -s "$DIR/tf1.xyz" "$DIR/tf2.xyz" &&
       pass "unified/mixed: --threads 1 and 2 byte-identical (output and features)" || fail "unified/mixed --threads 1 and 2" "outputs differ"
   fi
-  # --no-warm-starts: every query projected on its own, the ridge still reproduced.
+  # --no-warm-starts (every query projected on its own) is accepted, and the ridge still reproduced.
   if run_ok "unified/wedge --no-warm-starts 3D" --input edge.xyz --queries edge_q.xyz --output nw.xyz --operator unified \
             --space wedge --h $h3 --weight wendland --no-warm-starts; then
     check_shape "unified/wedge --no-warm-starts on a 3D 90-degree edge" "$DIR/nw.xyz" 3 20 $h3 1e-4
