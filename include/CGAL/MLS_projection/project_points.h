@@ -100,8 +100,8 @@ bool project_warm(const Projection& projection, const std::vector<Point>& points
 /// is projected cold, each next one continues from the fit of the one before (see
 /// `Closest_point_projection::project()`). The blocks depend only on the queries, so the results
 /// are bit-identical whatever the concurrency tag and the number of threads; a query's result
-/// can depend on the other queries, within the optimiser's tolerance. Other operators project
-/// each query independently.
+/// can depend on the other queries (a continued fit can be another local minimum than the cold
+/// one, see the manual). Other operators project each query independently.
 ///
 /// The queries are processed in batches; after each batch, the `callback` is called from the
 /// calling thread with the fraction done.
