@@ -102,6 +102,14 @@ CGAL::MLS::Closest_point<D> vertical_projection(const Parameters& c, const Eigen
 /// optimise the frame origin only.
 static constexpr bool has_sharp_features;
 
+/// Optional, for spaces with sharp features. The member made of the `k` hyperplanes (2 or 3)
+/// through the frame origin with unit normals `normals[0..k-1]` (frame coordinates, each oriented
+/// so that the others' pieces lie behind it): the boundary of the intersection of the half-spaces
+/// behind them, a crease or a corner with its apex at the origin. Returns false when the space
+/// cannot represent it. With it, the starts at creases and apices begin from that member (exact
+/// on noiseless data); without it, from `fit()`.
+bool member_of_hyperplanes(const Eigen::Matrix<double, D, 1>* normals, int k, Parameters& c) const;
+
 /// @}
 
 }; /* end MLSFunctionSpace */

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -49,6 +50,14 @@ template <class S> struct has_sharp_features<S, std::void_t<decltype(S::has_shar
 template <class S, class = void> struct is_rotation_invariant : std::false_type {};
 template <class S> struct is_rotation_invariant<S, std::void_t<decltype(S::is_rotation_invariant)>>
   : std::integral_constant<bool, S::is_rotation_invariant> {};
+
+// Function spaces may provide `bool member_of_hyperplanes(normals, k, c)`: the member made of k
+// hyperplanes through the frame origin, for the starts at creases and apices (else `fit()`).
+template <class S, class = void> struct has_member_of_hyperplanes : std::false_type {};
+template <class S>
+struct has_member_of_hyperplanes<S, std::void_t<decltype(std::declval<const S&>().member_of_hyperplanes(
+                                      std::declval<const Vec<S::ambient_dimension>*>(), 2,
+                                      std::declval<typename S::Parameters&>()))>> : std::true_type {};
 
 // Graph function spaces provide `vertical_projection(c, x)`, the point of f above or below x.
 template <class S, class = void> struct has_vertical_projection : std::false_type {};
@@ -89,7 +98,8 @@ struct has_closest_points<S, std::void_t<decltype(std::declval<const S&>().close
 /// Levin's frame with the function space's initial member; the frame whose normal is each other
 /// principal axis of the neighbourhood (the paper's start rotated by \f$\pi/2\f$); and, for spaces
 /// with sharp features, frames at the crease or apex where a split of the neighbourhood into two
-/// (or three) hyperplanes meet. A fit whose \f$C_{H,f}(r)\f$ is further from \f$r\f$ than Levin's
+/// (or three) hyperplanes meet, with the member made of those hyperplanes when the space provides
+/// one (`member_of_hyperplanes()`, optional in `MLSFunctionSpace`). A fit whose \f$C_{H,f}(r)\f$ is further from \f$r\f$ than Levin's
 /// frame origin plus \f$2h\f$ is penalised and rejected; when no start gives a valid fit, the
 /// result is Levin's projection with the status `NOT_CONVERGED`.
 ///
@@ -146,6 +156,13 @@ protected:
     bool converged = false;
     bool valid = false;
     bool supported = false;
+  };
+
+  // A start of the joint optimisation: a frame, and the member to start from when known (else
+  // the space's `fit()` in that frame).
+  struct Start {
+    Frame<D> frame;
+    std::optional<Parameters> member;
   };
 
 public:
@@ -271,8 +288,8 @@ protected:
 
   // The race of the starts (see project()).
   Fit race(const V& rs, const V& qL, const V& nL, const Neighborhood<D>& unit, double bound, int& iterations) const {
-    std::vector<Frame<D>> starts;
-    starts.push_back(Frame<D>::from_normal(qL, nL));
+    std::vector<Start> starts;
+    starts.push_back({Frame<D>::from_normal(qL, nL), std::nullopt});
     if constexpr(optimise_frame) add_starts(rs, qL, unit, starts);
 
     // A race: every start gets a short budget, then only the selected fit runs to convergence
@@ -280,8 +297,9 @@ protected:
     // fit (zero energy) supported by the data ends the race: no other start can beat it.
     std::vector<Fit> fits;
     const int short_budget = starts.size() > 1 ? race_evaluations : 0;
-    for(const Frame<D>& start : starts) {
-      Fit fit = minimize(rs, start, initial_member(start, unit), unit, bound, short_budget);
+    for(const Start& start : starts) {
+      Fit fit = minimize(rs, start.frame, start.member ? *start.member : initial_member(start.frame, unit), unit, bound,
+                         short_budget);
       iterations += fit.iterations;
       fit.supported = fit.valid && is_supported(fit, unit);
       fits.push_back(fit);
@@ -416,7 +434,7 @@ protected:
   // Starts of the joint optimisation besides Levin's frame (paper, section 4.1): the frame
   // turned by pi/2 (in 3D, each other principal axis of the neighbourhood as the normal), and,
   // for spaces with sharp features, frames at the crease or apex proposed by a plane split.
-  void add_starts(const V& r, const V& qL, const Neighborhood<D>& nbh, std::vector<Frame<D>>& starts) const {
+  void add_starts(const V& r, const V& qL, const Neighborhood<D>& nbh, std::vector<Start>& starts) const {
     std::vector<double> w(nbh.size());
     for(std::size_t i = 0; i < nbh.size(); ++i) w[i] = unit_weight_((nbh.points[i] - qL).squaredNorm());
     const Pca<D> pca = internal::weighted_pca<D>(nbh.points, w);
@@ -424,7 +442,8 @@ protected:
     // A flat neighbourhood (the smallest eigenvalue below a tenth of the next) gives a turned
     // frame nothing to fit: those starts are skipped (measured in the benchmark's README).
     if(!(pca.eigenvalues[0] < flat_ratio * pca.eigenvalues[1]))
-      for(int axis = 1; axis < D; ++axis) starts.push_back(Frame<D>::from_normal(qL, pca.eigenvectors.col(axis)));
+      for(int axis = 1; axis < D; ++axis)
+        starts.push_back({Frame<D>::from_normal(qL, pca.eigenvectors.col(axis)), std::nullopt});
     if constexpr(internal::has_sharp_features<FunctionSpace>::value) {
       // Proposals see the whole gathered ball (radius: support + 2h) with equal weights, so
       // that a crease at the edge of the support, with few points of weight, is still found.
@@ -446,18 +465,20 @@ protected:
   }
 
   template <int K>
-  void add_feature_start(const V& r, const std::array<Hyperplane<D>, K>& planes, std::vector<Frame<D>>& starts) const {
+  void add_feature_start(const V& r, const std::array<Hyperplane<D>, K>& planes, std::vector<Start>& starts) const {
     V x;
     if(!internal::intersection_nearest<D, K>(planes, r, x)) return;
     // Orient each hyperplane so that the other pieces lie behind it: the normals are then all
     // outward (convex feature) or all inward (concave), and their sum is the feature's bisector,
     // over which the pieces form a graph.
+    std::array<V, K> normals;
     V n = V::Zero();
     for(int k = 0; k < K; ++k) {
       double behind = 0;
       for(int j = 0; j < K; ++j)
         if(j != k) behind += planes[k].distance(planes[j].centroid);
-      n += (behind > 0 ? -1. : 1.) * planes[k].normal;
+      normals[k] = (behind > 0 ? -1. : 1.) * planes[k].normal;
+      n += normals[k];
     }
     if(!(n.norm() > 1e-6)) return;
     Frame<D> frame = Frame<D>::from_normal(x, n.normalized());
@@ -467,7 +488,17 @@ protected:
       frame.axes.col(0) = e1;
       frame.axes.col(1) = frame.normal().cross(e1);
     }
-    starts.push_back(frame);
+    // The member made of the planes themselves, when the space has it: on noiseless data of a
+    // crease or corner, the start is then exact at once. (From `fit()`, the initial member of a
+    // corner could lie in another basin: two of 629 queries near the test cube's corner, whose
+    // race then ended 5e-3 h off; see the manual.)
+    std::optional<Parameters> member;
+    if constexpr(internal::has_member_of_hyperplanes<FunctionSpace>::value) {
+      for(V& nk : normals) nk = frame.axes.transpose() * nk;
+      Parameters c;
+      if(space_.member_of_hyperplanes(normals.data(), K, c)) member = c;
+    }
+    starts.push_back({frame, member});
   }
 
   // The neighbourhood with every length divided by h.
@@ -660,6 +691,11 @@ protected:
     settings.watched = &C_at_last_evaluation;
     settings.watch_tolerance = 1e-5;
     settings.watch_relative = 1e-2;
+    // A parameter that hardly moves the residuals (a fan vector turning within its face, whose
+    // two cones stay coplanar) gets a tiny scale in MINPACK's scaling, and then huge trial steps
+    // (a longitude moved by 1e3 to 1e8 rad): the fit stalls. Such parameters are common at exact
+    // or nearly exact fans; the floor bounds their steps (see the manual, "Starts").
+    settings.scaling_floor = scaling_floor;
     settings.max_evaluations =
       max_evaluations > 0 ? max_evaluations : this->options_.max_evaluations * (n + 1) / (D + 1);
     if(window > 0) settings.stall_evaluations = settings.watch_evaluations = window;
@@ -754,6 +790,8 @@ protected:
   // iterations on the noiseless cube, none on the torus and the noisy cube.
   static constexpr double near_exact_energy = 1e-6;
   static constexpr double rival_factor = 10;
+  // The floor of the optimiser's parameter scales, relative to the largest (see minimize()).
+  static constexpr double scaling_floor = 1e-2;
 
   static Projection_options with_bandwidth(Projection_options options, double h) {
     if(h > 0) options.bandwidth = h; // derived once, by the base

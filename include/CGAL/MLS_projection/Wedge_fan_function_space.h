@@ -163,6 +163,82 @@ public:
     return r;
   }
 
+  /// The member made of the `k` hyperplanes through the frame origin with unit normals
+  /// `normals[0..k-1]` (frame coordinates): the boundary of the intersection of the half-spaces
+  /// behind them (a crease for two, a corner for three in 3D). Its rays: in 2D, along each line,
+  /// away from the other; in 3D, along the crease both ways and into each plane across it
+  /// (two), or along the three pairwise intersections (three); further vectors bisect the
+  /// widest angle between consecutive rays, which both lie in one plane. Returns false when the
+  /// hyperplanes are within about 0.6 degrees of parallel or the fan has too few vectors.
+  bool member_of_hyperplanes(const internal::Vec<D>* normals, int k, Parameters& c) const {
+    constexpr double tolerance = 1e-2;
+    if constexpr(D == 2) {
+      if(k != 2) return false;
+      for(int i = 0; i < 2; ++i) {
+        V d(-normals[i][1], normals[i][0]);
+        const double across = normals[1 - i].dot(d);
+        if(!(std::abs(across) > tolerance)) return false;
+        if(across > 0) d = -d;
+        c[i] = std::atan2(d[1], d[0]);
+      }
+      return true;
+    } else {
+      std::array<V, number_of_vectors> rays;
+      int m = 0;
+      if(k == 2 && N >= 4) {
+        V e = normals[0].cross(normals[1]);
+        if(!(e.norm() > tolerance)) return false;
+        e.normalize();
+        V d0 = normals[0].cross(e), d1 = normals[1].cross(e);
+        if(normals[1].dot(d0) > 0) d0 = -d0;
+        if(normals[0].dot(d1) > 0) d1 = -d1;
+        rays[m++] = e;
+        rays[m++] = d0;
+        rays[m++] = -e;
+        rays[m++] = d1;
+      } else if(k == 3) {
+        for(int i = 0; i < 3; ++i) {
+          V e = normals[(i + 1) % 3].cross(normals[(i + 2) % 3]);
+          if(!(e.norm() > tolerance)) return false;
+          e.normalize();
+          const double across = normals[i].dot(e);
+          if(!(std::abs(across) > tolerance)) return false;
+          rays[m++] = across > 0 ? V(-e) : e;
+        }
+      } else {
+        return false;
+      }
+      // The rays in the order of their longitudes, then the widest gaps bisected.
+      std::array<double, number_of_vectors> lon;
+      for(int i = 0; i < m; ++i) lon[i] = std::atan2(rays[i][1], rays[i][0]);
+      for(int i = 1; i < m; ++i)
+        for(int j = i; j > 0 && lon[j] < lon[j - 1]; --j) {
+          std::swap(lon[j], lon[j - 1]);
+          std::swap(rays[j], rays[j - 1]);
+        }
+      while(m < N) {
+        int widest = 0;
+        double angle = -1;
+        for(int i = 0; i < m; ++i) {
+          const double a = std::acos((std::max)(-1., (std::min)(1., rays[i].dot(rays[(i + 1) % m]))));
+          if(a > angle) {
+            angle = a;
+            widest = i;
+          }
+        }
+        const V b = (rays[widest] + rays[(widest + 1) % m]).normalized();
+        for(int i = m; i > widest + 1; --i) rays[i] = rays[i - 1];
+        rays[widest + 1] = b;
+        ++m;
+      }
+      for(int i = 0; i < N; ++i) {
+        c[2 * i] = std::asin((std::max)(-1., (std::min)(1., rays[i][2])));
+        c[2 * i + 1] = std::atan2(rays[i][1], rays[i][0]);
+      }
+      return c.allFinite();
+    }
+  }
+
   /// The unit vector of latitude `lat` and longitude `lon`.
   static internal::Vec<3> direction(double lat, double lon) {
     const double cl = std::cos(lat);

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -49,6 +50,9 @@ struct Minimizer_settings {
   // noise allows, and the steps crawl along a flat valley long after it stopped changing.
   double watch_relative = 0;
   int watch_evaluations = 10;
+  // With an analytic Jacobian: the scale of each parameter (MINPACK's `diag`: the largest norm
+  // of its Jacobian column so far) is at least this fraction of the largest column norm.
+  double scaling_floor = 0;
 };
 
 struct Minimizer_report {
@@ -124,16 +128,38 @@ struct Residual_jacobian_functor : Residual_functor<ResidualFunction> {
   int df(const typename Residual_functor<ResidualFunction>::InputType& x,
          typename Residual_functor<ResidualFunction>::JacobianType& J) const {
     (*j_)(x, J);
+    if(diag) {
+      // MINPACK's scaling (mode 1), with the floor
+      const Eigen::VectorXd norms = J.colwise().norm().transpose();
+      const double floor = (std::max)(this->settings.scaling_floor * norms.maxCoeff(), 1e-300);
+      for(Eigen::Index j = 0; j < norms.size(); ++j) {
+        const double d = (std::max)(norms[j], floor);
+        (*diag)[j] = first_df ? d : (std::max)((*diag)[j], d);
+      }
+      first_df = false;
+    }
     return 0;
   }
   const JacobianFunction* j_;
+  Eigen::VectorXd* diag = nullptr; // when set, MINPACK's external scaling, updated here
+  mutable bool first_df = true;
 };
+
+template <class F, class = void> struct has_scaling : std::false_type {};
+template <class F> struct has_scaling<F, std::void_t<decltype(std::declval<F&>().diag)>> : std::true_type {};
 
 template <class Functor, class ResidualFunction>
 Minimizer_report run_levenberg_marquardt(Functor& functor, const ResidualFunction& residuals, int m,
                                          const Eigen::VectorXd& x0, const Minimizer_settings& settings) {
   functor.settings = settings;
   Eigen::LevenbergMarquardt<Functor> lm(functor);
+  if constexpr(has_scaling<Functor>::value) {
+    if(settings.scaling_floor > 0) {
+      lm.useExternalScaling = true;
+      lm.diag = Eigen::VectorXd::Ones(x0.size()); // replaced at the first Jacobian
+      functor.diag = &lm.diag;
+    }
+  }
   lm.parameters.ftol = settings.tolerance;
   lm.parameters.xtol = settings.tolerance;
   lm.parameters.maxfev = settings.max_evaluations;
