@@ -31,7 +31,7 @@ namespace MLS {
 /// \ingroup PkgMLSProjectionFunctions
 /// The number of consecutive queries along the Hilbert curve that `project_points()` projects
 /// with warm starts, the first one cold.
-constexpr std::size_t warm_start_block = 64;
+constexpr std::size_t warm_start_block = 256;
 
 namespace internal {
 
@@ -74,7 +74,7 @@ bool project_warm(const Projection& projection, const std::vector<Point>& points
   order.insert(order.end(), invalid.begin(), invalid.end());
 
   const std::size_t n = order.size();
-  const std::size_t batch = 64 * warm_start_block;
+  const std::size_t batch = 32 * warm_start_block;
   for(std::size_t begin = 0; begin < n; begin += batch) {
     const std::size_t end = (std::min)(n, begin + batch);
     const std::size_t blocks = (end - begin + warm_start_block - 1) / warm_start_block;
