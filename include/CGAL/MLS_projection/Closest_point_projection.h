@@ -332,7 +332,8 @@ protected:
     const bool alone = starts.size() == 1;
     for(const Start& start : starts) {
       const Parameters c = start.member ? *start.member : initial_member(start.frame, unit);
-      Fit fit = alone ? converge(rs, start.frame, c, unit, bound, in_chain) : minimize(rs, start.frame, c, unit, bound, race_evaluations);
+      Fit fit = alone ? converge(rs, start.frame, c, unit, bound, in_chain)
+                      : minimize(rs, start.frame, c, unit, bound, race_evaluations);
       iterations += fit.iterations;
       fit.supported = fit.valid && is_supported(fit, unit);
       fits.push_back(fit);
@@ -380,8 +381,11 @@ protected:
     Fit fit = minimize(rs, frame, c, unit, bound, 0, 0, warm_window);
     if(fit.valid && fit.value > exact_value && fit.energy < near_exact_energy) {
       Fit more = minimize(rs, fit.frame, fit.c, unit, bound);
-      more.iterations += fit.iterations;
-      if(more.valid) return more;
+      if(more.valid) {
+        more.iterations += fit.iterations;
+        return more;
+      }
+      fit.iterations += more.iterations;
     }
     return fit;
   }
