@@ -1,5 +1,6 @@
 // Tests of the function spaces with closest-point projection (MLSFunctionSpace):
-// Plane_function_space, Quadratic_function_space and Wedge_fan_function_space, in 2D and 3D.
+// Plane_function_space, Quadratic_function_space and Wedge_fan_function_space, in 2D and 3D;
+// and of the weight functions' derivatives.
 // Eigen-only: no CGAL kernel or search header, so that this file compiles fast.
 //
 // Each closest point is checked against an independent brute force: a dense sampling of the
@@ -12,6 +13,7 @@
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Quadratic_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/Weight_function.h>
 
 #include <algorithm>
 #include <cmath>
@@ -703,5 +705,28 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
 }
 
 } // namespace
+
+// The derivative of each weight with respect to the squared distance against central
+// differences, in units of the squared support radius R^2 (relative step 1e-5: truncation error
+// of order 1e-10, rounding 1e-11), and the overload given the weight equal to it exactly; zero
+// beyond the support.
+MLS_TEST(weight_derivatives) {
+  const double h = 0.3;
+  for(const MLS::Weight_kind kind : {MLS::Weight_kind::GAUSSIAN, MLS::Weight_kind::WENDLAND}) {
+    const MLS::Weight_function w(kind, h, kind == MLS::Weight_kind::GAUSSIAN ? 4. : 2.5);
+    const double R2 = w.support_radius() * w.support_radius();
+    double worst = 0;
+    for(double t = 0.01; t < 1; t += 0.01) {
+      const double d2 = t * R2, eps = 1e-5 * d2;
+      const double fd = (w(d2 + eps) - w(d2 - eps)) / (2 * eps);
+      worst = std::max(worst, std::abs(w.derivative(d2) - fd) * R2);
+      MLS_CHECK(w.derivative(d2, w(d2)) == w.derivative(d2));
+    }
+    std::cout << "       " << (kind == MLS::Weight_kind::GAUSSIAN ? "Gaussian" : "Wendland")
+              << ": worst error of the derivative " << worst << " / R^2\n";
+    MLS_CHECK_LE(worst, 1e-8);
+    MLS_CHECK(w.derivative(1.5 * R2) == 0. && w.derivative(1.5 * R2, 0.) == 0. && w(1.5 * R2) == 0.);
+  }
+}
 
 int main(int argc, char** argv) { return mls_test::run_all(argc, argv); }

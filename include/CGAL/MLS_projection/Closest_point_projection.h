@@ -12,6 +12,7 @@
 #include <CGAL/MLS_projection/internal/plane_split.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -109,8 +110,9 @@ struct has_closest_points<S, std::void_t<decltype(std::declval<const S&>().close
 /// tried once more with the last fit's frame origin moved to \f$C_0\f$, the closest point of the
 /// query on the last fit, then the starts above run. A continued fit needs neither Levin's frame
 /// nor the whole gathered ball: its neighbourhood is the support around \f$C_0\f$, plus \f$h/2\f$,
-/// and its bound is \f$|C_0 - r| + 2h\f$. `project_points()` does this along a Hilbert curve of its
-/// queries.
+/// and its bound is \f$\min(|C_0 - r|, d) + 2h\f$, with \f$d\f$ the distance of \f$r\f$ to its
+/// nearest input point (a jump in the order of the queries cannot carry the projection to the data
+/// near the last query). `project_points()` does this along a Hilbert curve of its queries.
 ///
 /// The optimisation works in units of \f$h\f$: the result's `coefficients` are those of the
 /// member with every length divided by \f$h\f$.
@@ -257,7 +259,13 @@ protected:
         nbh.gather(this->samples(), h * C0, h * (support + warm_margin));
         if(nbh.size() >= minimum_points()) {
           unit = in_units_of_h(nbh);
-          bound = (C0 - rs).norm() + 2;
+          // C(r) may not move further from r than C0 or r's nearest input point, plus 2h (as
+          // Levin's origin in the cold bound): a jump in the order of the queries can put C0 on
+          // the last fit's extension, far from the data near r, where the continued fit fits
+          // other data (on the benchmark's noisy torus, with a trial Jacobian that differed only
+          // by rounding, a projection landed 9.7 h from its query; see the manual).
+          const double nearest = this->samples().kth_neighbor_distance(r, 1) / h;
+          bound = (std::min)((C0 - rs).norm(), nearest) + 2;
           best = continued(rs, last, unit, bound, iterations);
           if(!best.valid) {
             // On noisy data, a continued fit is mostly rejected because the fit's kinks, which
@@ -390,6 +398,37 @@ protected:
     return fit;
   }
 
+  // Calls `visit(w_i, cp_i)` for each point i of `nbh` of positive weight w_i around the fit's
+  // C(r), with its closest point cp_i on the fit (frame coordinates), until `visit` returns true;
+  // returns whether it did. The closest points are computed in batches: a fan is prepared (its
+  // vectors from their angles) once per batch, not once per point.
+  template <class Visit>
+  bool visit_weighted_points(const Fit& f, const Neighborhood<D>& nbh, Visit visit) const {
+    constexpr std::size_t batch = 32;
+    std::array<double, batch> weight;
+    std::array<V, batch> y;
+    std::array<Closest_point<D>, batch> cps;
+    std::size_t k = 0;
+    for(std::size_t i = 0; i <= nbh.size(); ++i) {
+      if(i < nbh.size()) {
+        const double wi = unit_weight_((nbh.points[i] - f.C).squaredNorm());
+        if(!(wi > 0)) continue;
+        weight[k] = wi;
+        y[k++] = f.frame.to_frame(nbh.points[i]);
+        if(k < batch) continue;
+      }
+      if constexpr(internal::has_closest_points<FunctionSpace>::value) {
+        space_.closest_points(f.c, y.data(), k, cps.data(), nullptr);
+      } else {
+        for(std::size_t j = 0; j < k; ++j) cps[j] = space_.closest_point(f.c, y[j]);
+      }
+      for(std::size_t j = 0; j < k; ++j)
+        if(visit(weight[j], cps[j])) return true;
+      k = 0;
+    }
+    return false;
+  }
+
   // The fit of lowest energy among the fits whose C(r) is supported by data, i.e. lies within
   // h/2 of the closest point of some weighted input point; among fits whose energies are
   // indistinguishable (within 5%, or both numerically zero: below `exact_value`), the earliest
@@ -412,16 +451,17 @@ protected:
     c.reserve(nbh.size());
     double nearest = std::numeric_limits<double>::infinity();
     std::size_t k = 0;
-    for(std::size_t i = 0; i < nbh.size(); ++i) {
-      if(unit_weight_((nbh.points[i] - f.C).squaredNorm()) <= 0) continue;
-      c.push_back(f.frame.to_local(space_.closest_point(f.c, f.frame.to_frame(nbh.points[i])).point));
+    const bool near = visit_weighted_points(f, nbh, [&](double, const Closest_point<D>& cp) {
+      c.push_back(f.frame.to_local(cp.point));
       const double d = (c.back() - f.C).squaredNorm();
       if(d <= 0.25) return true;
       if(d < nearest) {
         nearest = d;
         k = c.size() - 1;
       }
-    }
+      return false;
+    });
+    if(near) return true;
     double spacing = std::numeric_limits<double>::infinity();
     for(std::size_t j = 0; j < c.size(); ++j)
       if(j != k) spacing = (std::min)(spacing, (c[j] - c[k]).squaredNorm());
@@ -450,12 +490,9 @@ protected:
   bool on_a_piece_with_data(const Fit& f, const Neighborhood<D>& nbh) const {
     const auto at_C = space_.closest_point(f.c, f.frame.to_frame(f.C));
     if(at_C.is_singular) return true;
-    for(std::size_t i = 0; i < nbh.size(); ++i) {
-      if(unit_weight_((nbh.points[i] - f.C).squaredNorm()) <= 0) continue;
-      const auto cp = space_.closest_point(f.c, f.frame.to_frame(nbh.points[i]));
-      if(!cp.is_singular && cp.normal.dot(at_C.normal) > 1 - 5e-13) return true;
-    }
-    return false;
+    return visit_weighted_points(f, nbh, [&](double, const Closest_point<D>& cp) {
+      return !cp.is_singular && cp.normal.dot(at_C.normal) > 1 - 5e-13;
+    });
   }
 
   Fit select(const std::vector<Fit>& fits) const {
@@ -571,6 +608,7 @@ protected:
   Fit minimize(const V& r, const Frame<D>& start, const Parameters& c0, const Neighborhood<D>& nbh, double bound,
                int max_evaluations = 0, int stall_window = 0, int watch_window = 0) const {
     constexpr int F = T + R; // parameters of the frame
+    constexpr bool translation_only = optimise_frame && R == 0; // the frame only moves
     const int n = F + P;
     const int m = int(nbh.size()) + 2;
     // the start's plane, its origin moved to the foot of r
@@ -662,7 +700,7 @@ protected:
       // disagree, the smaller one is kept (the derivative on the side of the query's piece).
       Eigen::Matrix<double, D, Eigen::Dynamic> dC(D, n);
       std::array<internal::Mat<D>, F + 1> dA;
-      std::array<V, F + 1> dq;
+      std::array<V, F + 1> dq, Adq; // Adq: A^T dq
       Eigen::VectorXd xp = x, xm = x;
       for(int j = 0; j < n; ++j) {
         const double eps = 1e-7 * (1. + std::abs(x[j]));
@@ -680,6 +718,7 @@ protected:
           unpack(xm, fm, cm);
           dA[j] = (fp.axes - fm.axes) / (2. * eps);
           dq[j] = (fp.origin - fm.origin) / (2. * eps);
+          Adq[j] = f.axes.transpose() * dq[j];
         }
         xp[j] = xm[j] = x[j];
       }
@@ -688,7 +727,7 @@ protected:
       Eigen::RowVectorXd dW = Eigen::RowVectorXd::Zero(n);
       for(std::size_t k = 0; k < y.size(); ++k) {
         const V e = nbh.points[active[k]] - C;
-        dw.row(k) = (-2. * unit_weight_.derivative(e.squaredNorm())) * (e.transpose() * dC);
+        dw.row(k) = (-2. * unit_weight_.derivative(e.squaredNorm(), w[active[k]])) * (e.transpose() * dC);
         dW += dw.row(k);
       }
       for(std::size_t k = 0; k < y.size(); ++k) {
@@ -700,8 +739,14 @@ protected:
         const double a = std::sqrt(w[i] / W);
         for(int j = 0; j < n; ++j) {
           double dd;
-          if(j < F) dd = g.dot(dA[j].transpose() * (nbh.points[i] - f.origin) - f.axes.transpose() * dq[j]);
-          else dd = grads[k][j - F];
+          if(j < F) {
+            // the frame coordinates y = A^T (p - q) move by dA^T (p - q) - A^T dq (dA = 0 when the
+            // frame only moves)
+            if constexpr(translation_only) dd = -g.dot(Adq[j]);
+            else dd = g.dot(dA[j].transpose() * (nbh.points[i] - f.origin) - Adq[j]);
+          } else {
+            dd = grads[k][j - F];
+          }
           const double dratio = dw(k, j) / W - w[i] * dW[j] / (W * W); // d (w_i / W)
           (*J)(i, j) = cp.signed_distance * dratio / (2. * a) + a * dd;
         }
@@ -772,13 +817,11 @@ protected:
     fit.value = report.value;
     // the energy of equation 6 without the displacement penalty
     double sum_w = 0, E = 0;
-    for(std::size_t i = 0; i < nbh.size(); ++i) {
-      const double wi = unit_weight_((nbh.points[i] - fit.C).squaredNorm());
-      if(wi <= 0) continue;
-      const double d = space_.closest_point(fit.c, fit.frame.to_frame(nbh.points[i])).signed_distance;
+    visit_weighted_points(fit, nbh, [&](double wi, const Closest_point<D>& cp) {
       sum_w += wi;
-      E += wi * d * d;
-    }
+      E += wi * cp.signed_distance * cp.signed_distance;
+      return false;
+    });
     fit.energy = sum_w > 0 ? E / sum_w : std::numeric_limits<double>::infinity();
     fit.valid = std::isfinite(fit.value) && std::isfinite(fit.energy) && fit.C.allFinite() &&
                 (fit.C - r).norm() <= bound * (1 + 1e-9) && fit.value < 1e5;

@@ -275,6 +275,7 @@ private:
     std::array<V, number_of_vectors> v;      // sorted vectors
     std::array<V, number_of_vectors> fn;     // 3D: normal of cone j = (v[j], v[j+1]); 2D: normal of ray j
     std::array<bool, number_of_vectors> ok;  // 3D: cone j is not degenerate
+    std::array<double, number_of_vectors> cn{}; // 3D: v[j] . v[j+1]
     std::array<int, number_of_vectors> order; // index (in the parameters) of the j-th sorted vector
     std::array<std::array<V, 2>, number_of_vectors> dv; // d v[j] / d (its parameters)
   };
@@ -316,6 +317,7 @@ private:
         if(k == 0) gap += 2. * M_PI;
         const V n = f.v[j].cross(f.v[k]);
         const double len = n.norm();
+        f.cn[j] = f.v[j].dot(f.v[k]);
         f.ok[j] = len > 1e-12;
         f.fn[j] = f.ok[j] ? V(((gap > M_PI) ? -1. : 1.) * n / len) : V::Zero();
       }
@@ -383,10 +385,12 @@ private:
     int kind = 0, which = -1;
     double best = x.squaredNorm(), ca = 0., cb = 0.;
     V point = V::Zero();
+    std::array<double, N> xv; // x . v[j]
+    for(int j = 0; j < N; ++j) xv[j] = x.dot(v[j]);
     for(int j = 0; j < N; ++j) {
       if(!ok[j]) continue;
       const int k = (j + 1) % N;
-      const double cjk = v[j].dot(v[k]), rj = x.dot(v[j]), rk = x.dot(v[k]);
+      const double cjk = f.cn[j], rj = xv[j], rk = xv[k];
       const double det = 1. - cjk * cjk;
       if(!(det > 0.)) continue;
       const double alpha = (rj - cjk * rk) / det, beta = (rk - cjk * rj) / det;
@@ -403,7 +407,7 @@ private:
       }
     }
     for(int j = 0; j < N; ++j) {
-      const double t = x.dot(v[j]);
+      const double t = xv[j];
       if(!(t > 0.)) continue;
       const V y = t * v[j];
       const double e = (x - y).squaredNorm();

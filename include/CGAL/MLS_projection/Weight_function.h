@@ -59,6 +59,13 @@ public:
     return -10. * s * s * s * inv_r_ * inv_r_;
   }
 
+  /// The same, given the weight `w` at `d2` (`w == (*this)(d2)`): the Gaussian's derivative is
+  /// then computed without a second exponential.
+  double derivative(double d2, double w) const {
+    if(kind_ == Weight_kind::GAUSSIAN) return d2 >= radius_ * radius_ ? 0. : -inv_h2_ * w;
+    return derivative(d2);
+  }
+
 private:
   Weight_kind kind_;
   double h_, inv_h2_, radius_, inv_r_;
