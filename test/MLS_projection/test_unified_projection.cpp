@@ -716,8 +716,9 @@ MLS_TEST(warm_started_project_points_are_exact_and_cheaper) {
 // query on the top plane, the query below it on the bottom plane has the closest point C0 on the
 // last fit right above it, where the continued fit fits the top plane exactly. The projection
 // must still be on the bottom plane, where the query is (before the continued fit's bound used
-// the query's nearest input point, it landed on the top plane, 3 h away: the benchmark's noisy
-// torus had a projection 9.7 h from its query after a jump in the order of its queries).
+// the query's nearest input point, it landed on the top plane, 3 h away; on the benchmark's noisy
+// torus, with a trial Jacobian that differed only by rounding, a projection landed 9.7 h from its
+// query after a jump in the order of its queries).
 MLS_TEST(warm_start_from_a_distant_fit_stays_with_the_query) {
   const double s = 0.02;
   std::vector<Epick::Point_3> plane;

@@ -398,6 +398,16 @@ protected:
     return fit;
   }
 
+  // The closest points `out[0..n-1]` of the frame coordinates `y[0..n-1]` on the member `c`, in one
+  // batch when the space has `closest_points()` (with the gradients, when `grads` is not null).
+  void closest_points(const Parameters& c, const V* y, std::size_t n, Closest_point<D>* out, Parameters* grads) const {
+    if constexpr(internal::has_closest_points<FunctionSpace>::value) {
+      space_.closest_points(c, y, n, out, grads);
+    } else {
+      for(std::size_t i = 0; i < n; ++i) out[i] = space_.closest_point(c, y[i]);
+    }
+  }
+
   // Calls `visit(w_i, cp_i)` for each point i of `nbh` of positive weight w_i around the fit's
   // C(r), with its closest point cp_i on the fit (frame coordinates), until `visit` returns true;
   // returns whether it did. The closest points are computed in batches: a fan is prepared (its
@@ -417,11 +427,7 @@ protected:
         y[k++] = f.frame.to_frame(nbh.points[i]);
         if(k < batch) continue;
       }
-      if constexpr(internal::has_closest_points<FunctionSpace>::value) {
-        space_.closest_points(f.c, y.data(), k, cps.data(), nullptr);
-      } else {
-        for(std::size_t j = 0; j < k; ++j) cps[j] = space_.closest_point(f.c, y[j]);
-      }
+      closest_points(f.c, y.data(), k, cps.data(), nullptr);
       for(std::size_t j = 0; j < k; ++j)
         if(visit(weight[j], cps[j])) return true;
       k = 0;
@@ -676,12 +682,8 @@ protected:
           return;
         }
         cps.resize(y.size());
-        if constexpr(internal::has_closest_points<FunctionSpace>::value) {
-          grads.resize(y.size());
-          space_.closest_points(c, y.data(), y.size(), cps.data(), grads.data());
-        } else {
-          for(std::size_t k = 0; k < y.size(); ++k) cps[k] = space_.closest_point(c, y[k]);
-        }
+        grads.resize(y.size());
+        closest_points(c, y.data(), y.size(), cps.data(), grads.data());
         for(std::size_t k = 0; k < y.size(); ++k) res[active[k]] = std::sqrt(w[active[k]] / W) * cps[k].signed_distance;
         const double excess = (C - r).norm() - bound;
         res[m - 2] = excess > 0 ? 10. * excess : 0.;
