@@ -104,6 +104,9 @@ struct Residual_functor {
     return 0;
   }
 
+  // The lowest sum of squares so far, at `solution`.
+  double best() const { return best_; }
+
   // The watched quantity's tolerance at the lowest sum of squares so far.
   double watch_tolerance() const {
     return (std::max)(settings.watch_tolerance, settings.watch_relative * std::sqrt(best_));
@@ -175,12 +178,19 @@ Minimizer_report run_levenberg_marquardt(Functor& functor, const ResidualFunctio
   report.converged = stopped || (status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation &&
                                       status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
                                       status != Eigen::LevenbergMarquardtSpace::UserAsked);
-  Eigen::VectorXd r(m);
-  residuals(report.x, r);
-  report.value = r.squaredNorm();
+  // The sum of squares at x, without evaluating it again: the functor's lowest when it stopped
+  // the optimiser, else that of the optimiser's residuals, which are x's (MINPACK keeps a trial
+  // point's residuals only when it takes the point), unless it rejected its input before any.
+  bool evaluate = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters;
+  if(stopped) report.value = functor.best();
+  else if(!evaluate) report.value = lm.fvec.squaredNorm();
   if(!report.x.allFinite()) {
     report.x = x0;
     report.converged = false;
+    evaluate = true;
+  }
+  if(evaluate) {
+    Eigen::VectorXd r(m);
     residuals(report.x, r);
     report.value = r.squaredNorm();
   }
