@@ -34,6 +34,20 @@ struct Neighborhood {
   }
 
   bool covers(const Vec<D>& q, double support) const { return (q - centre).norm() + support <= radius * (1 + 1e-12); }
+
+  /// The points of this set within `r` of `c`, as if gathered there; needs `covers(c, r)`.
+  Neighborhood within(const Vec<D>& c, double r) const {
+    Neighborhood ball;
+    ball.centre = c;
+    ball.radius = r;
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      if((points[i] - c).squaredNorm() > r * r) continue;
+      ball.indices.push_back(indices[i]);
+      ball.points.push_back(points[i]);
+    }
+    return ball;
+  }
+
   std::size_t size() const { return points.size(); }
 };
 
