@@ -13,7 +13,13 @@
 // Built only with -DMLS_PROJECTION_BUILD_FUZZERS=ON and clang; see fuzz/README.md.
 
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 
 #include <fuzzer/FuzzedDataProvider.h>
 

@@ -39,7 +39,14 @@
 // Usage: bench_projection --help
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/jet_smooth_point_set.h>
 #include <CGAL/tags.h>
 

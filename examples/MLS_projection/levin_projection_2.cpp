@@ -3,7 +3,9 @@
 // first phase alone) and quadratic polynomials over the frame.
 
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/Random.h>
 
 #include <cmath>

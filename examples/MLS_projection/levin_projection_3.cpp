@@ -2,7 +2,8 @@
 // sampled sphere, with the default function space (quadratic polynomials).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/point_generators_3.h>
 #include <CGAL/Random.h>
 

@@ -3,7 +3,11 @@
 // The points and normals are stored as pairs and read through property maps.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Random.h>
 #include <CGAL/tags.h>

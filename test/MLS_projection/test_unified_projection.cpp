@@ -14,7 +14,14 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/MLS_projection.h>
+#include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Plane_function_space.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
+#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/project_points.h>
 
 #include <cmath>
 #include <random>
