@@ -28,6 +28,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -693,15 +694,19 @@ private:
   }
 
   // Projects `queries` with the seed projection (built here: its screening threshold comes from
-  // the seeds), in chunks of 128 so that the callback (fractions from `start` to 0.95) is called
-  // often. False when cancelled.
+  // the seeds), in chunks so that the callback (fractions from `start` to 0.95) is called often:
+  // 128 queries, or 8 blocks of warm starts for an operator that has them (project_points() runs
+  // a block per task: a chunk of one block would run on one thread). False when cancelled.
   template <class ConcurrencyTag>
   static bool project_seeds(Data& d, ConcurrencyTag, const std::vector<Point_3>& queries, std::vector<Result>& results,
                             std::vector<Result>& levin_results, const std::function<bool(double)>& callback,
                             double start) {
-    const std::size_t chunk = 128;
     const auto project_all = [&](const auto& projection, const std::vector<Point_3>& q, std::vector<Result>& out,
                                  double from, double to) {
+      using P = std::decay_t<decltype(projection)>;
+      bool warm = false;
+      if constexpr(internal::has_warm_start<P>::value) warm = projection.options().warm_starts;
+      const std::size_t chunk = warm ? 8 * warm_start_block : 128;
       out.reserve(out.size() + q.size());
       for(std::size_t b = 0; b < q.size(); b += chunk) {
         const std::size_t e = (std::min)(q.size(), b + chunk);
