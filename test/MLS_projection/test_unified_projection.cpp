@@ -23,6 +23,7 @@
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/project_points.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <utility>
@@ -517,6 +518,62 @@ MLS_TEST(invariance_under_rigid_motions_and_scaling) {
   long_budget.max_evaluations = 4000;
   check([&](const auto& p) { return MLS::Unified_projection<Epick, MLS::Quadratic_function_space<3>>(p, long_budget); }, paraboloid, pq,
         "P_U quadratic, paraboloid");
+}
+
+// On noisy data the minimum of a projection depends on the path of its optimisation; the path is
+// the same in a rotated copy when the starts and the parameters turn with the data (the start
+// frames' tangent axes from the data, the origin's offsets along the start's axes). Cube of 6000
+// points with noise sigma = 0.003 (0.043 h), 100 cold projections of P_U wedge near its edges,
+// rotated and moved as above. Measured: median difference 5e-7 h, 9% of the queries over 0.1 sigma
+// (other minima: the race's selection is not stable under rounding); with the tangent axes of
+// `tangent_basis()` (from the coordinate axes) and offsets along the coordinate axes: median
+// 4.7e-3 h, half the queries over 0.1 sigma. (Warm starts follow a Hilbert curve in the
+// coordinates, whose order changes with the rotation: see the manual.)
+MLS_TEST(rotation_invariance_on_a_noisy_cube) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, V3(1, 2, 3).normalized()).toRotationMatrix();
+  const V3 t(3, -2, 5);
+  const double sigma = 0.003;
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  std::normal_distribution<double> noise(0., sigma);
+  std::vector<Epick::Point_3> pts, moved_pts, queries;
+  const auto on_face = [&](int i, double margin) {
+    V3 x(u(gen), u(gen), u(gen));
+    x[(i % 6) / 2] = (i % 2) ? 0.5 : -0.5;
+    if(margin > 0) { // near an edge of the face
+      const int o = ((i % 6) / 2 + 1) % 3;
+      x[o] = (x[o] > 0 ? 1 : -1) * (0.5 - margin * std::abs(u(gen)));
+    }
+    return x;
+  };
+  for(int i = 0; i < 6000; ++i) {
+    const V3 x = on_face(i, 0) + V3(noise(gen), noise(gen), noise(gen));
+    pts.emplace_back(x[0], x[1], x[2]);
+    const V3 y = R * x + t;
+    moved_pts.emplace_back(y[0], y[1], y[2]);
+  }
+  for(int i = 0; i < 100; ++i) {
+    const V3 x = on_face(i, 0.08) + 0.02 * V3(u(gen), u(gen), u(gen));
+    queries.emplace_back(x[0], x[1], x[2]);
+  }
+  using Wedge = MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>>;
+  const Wedge P(pts, MLS::Projection_options()), Q(moved_pts, MLS::Projection_options());
+  const double h = P.bandwidth();
+  std::vector<double> d;
+  for(const auto& q : queries) {
+    const V3 y = R * eig(q) + t;
+    const auto a = P.project(q), b = Q.project(Epick::Point_3(y[0], y[1], y[2]));
+    MLS_CHECK(a.is_success() && b.is_success());
+    d.push_back((R * eig(a.point) + t - eig(b.point)).norm() / h);
+  }
+  std::sort(d.begin(), d.end());
+  const auto over = std::count_if(d.begin(), d.end(), [&](double x) { return x > 0.1 * sigma / h; });
+  std::cout << "  h " << h << ": |P(Rx + t) - (RP(x) + t)| median " << d[d.size() / 2] << " h, max " << d.back() << " h; "
+            << over << " of " << d.size() << " over 0.1 sigma" << std::endl;
+  // the optimiser's watch stops a fit when C(r) moves by less than 1e-5 h over its window: two
+  // runs of the same path stop within that
+  MLS_CHECK_LE(d[d.size() / 2], 1e-5);
+  MLS_CHECK_LE(over, 20);
 }
 
 MLS_TEST(continuity_along_a_line_of_queries) {

@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -341,7 +342,7 @@ protected:
   // proposed from `unit`, the whole gathered ball.
   std::vector<Start> starts_at(const V& rs, const V& qL, const V& nL, const Neighborhood<D>& unit) const {
     std::vector<Start> starts;
-    starts.push_back({Frame<D>::from_normal(qL, nL), std::nullopt});
+    starts.push_back({frame_from_data(qL, nL, unit), std::nullopt});
     if constexpr(optimise_frame) add_starts(rs, qL, unit, starts);
     return starts;
   }
@@ -589,6 +590,45 @@ protected:
     return space_.fit(y.data(), w.data(), y.size());
   }
 
+  // The frame at `origin` with the unit normal `n` whose first tangent axis follows the data: in
+  // 3D, the major axis of the second moments, about `origin` and weighted around it, of the points
+  // of `nbh` projected on the tangent plane, signed by their third moment along it. The starts of
+  // a fan (sectors from the first axis) and hence the fits then move with the input under a rigid
+  // motion; `tangent_basis()` depends on the coordinate axes: on a noisy cube rotated as a whole,
+  // cold projections of P_U wedge moved by up to 0.16 h relative to the cube (see the manual,
+  // "Starts"). An isotropic or symmetric neighbourhood leaves the axis or its sign to rounding.
+  Frame<D> frame_from_data(const V& origin, const V& n, const Neighborhood<D>& nbh) const {
+    Frame<D> frame = Frame<D>::from_normal(origin, n);
+    if constexpr(D == 3) {
+      const V t1 = frame.axes.col(0), t2 = frame.axes.col(1);
+      Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
+      std::vector<std::pair<double, Eigen::Vector2d>> weighted;
+      weighted.reserve(nbh.size());
+      for(const V& p : nbh.points) {
+        const V d = p - origin;
+        const double w = unit_weight_(d.squaredNorm());
+        if(!(w > 0)) continue;
+        const Eigen::Vector2d u(t1.dot(d), t2.dot(d));
+        second.noalias() += w * u * u.transpose();
+        weighted.emplace_back(w, u);
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(second);
+      if(solver.info() != Eigen::Success || !solver.eigenvectors().allFinite()) return frame;
+      Eigen::Vector2d major = solver.eigenvectors().col(1);
+      double third = 0;
+      for(const auto& [w, u] : weighted) {
+        const double x = u.dot(major);
+        third += w * x * x * x;
+      }
+      if(third < 0) major = -major;
+      const V e1 = (major[0] * t1 + major[1] * t2).normalized();
+      if(!e1.allFinite()) return frame;
+      frame.axes.col(0) = e1;
+      frame.axes.col(1) = n.cross(e1);
+    }
+    return frame;
+  }
+
   // Starts of the joint optimisation besides Levin's frame (paper, section 4.1): the frame
   // turned by pi/2 (in 3D, each other principal axis of the neighbourhood as the normal), and,
   // for spaces with sharp features, frames at the crease or apex proposed by a plane split.
@@ -601,7 +641,7 @@ protected:
     // frame nothing to fit: those starts are skipped (measured in the benchmark's README).
     if(!(pca.eigenvalues[0] < flat_ratio * pca.eigenvalues[1]))
       for(int axis = 1; axis < D; ++axis)
-        starts.push_back({Frame<D>::from_normal(qL, pca.eigenvectors.col(axis)), std::nullopt});
+        starts.push_back({frame_from_data(qL, pca.eigenvectors.col(axis), nbh), std::nullopt});
     if constexpr(internal::has_sharp_features<FunctionSpace>::value) {
       // Proposals see the whole gathered ball (radius: support + 2h) with equal weights, so
       // that a crease at the edge of the support, with few points of weight, is still found.
@@ -613,17 +653,18 @@ protected:
       // the benchmark's noisy torus had no feature start, and twice as fast P_U wedge, but a
       // query of the noiseless cube 2 h from an edge and 4.5 h from a corner (ratio 0.15) was
       // not reproduced: 6e-3 h off)
-      if(two.valid && two.energy < 0.25 * pca.eigenvalues[0]) add_feature_start<2>(r, two.planes, starts);
+      if(two.valid && two.energy < 0.25 * pca.eigenvalues[0]) add_feature_start<2>(r, two.planes, nbh, starts);
       if constexpr(D == 3) {
         const auto three = internal::split_in_three(nbh.points, w, pca);
         if(three.valid && three.energy < 0.25 * (std::min)(two.energy, pca.eigenvalues[0]))
-          add_feature_start<3>(r, three.planes, starts);
+          add_feature_start<3>(r, three.planes, nbh, starts);
       }
     }
   }
 
   template <int K>
-  void add_feature_start(const V& r, const std::array<Hyperplane<D>, K>& planes, std::vector<Start>& starts) const {
+  void add_feature_start(const V& r, const std::array<Hyperplane<D>, K>& planes, const Neighborhood<D>& nbh,
+                         std::vector<Start>& starts) const {
     V x;
     if(!internal::intersection_nearest<D, K>(planes, r, x)) return;
     // Orient each hyperplane so that the other pieces lie behind it: the normals are then all
@@ -639,7 +680,7 @@ protected:
       n += normals[k];
     }
     if(!(n.norm() > 1e-6)) return;
-    Frame<D> frame = Frame<D>::from_normal(x, n.normalized());
+    Frame<D> frame = frame_from_data(x, n.normalized(), nbh);
     if constexpr(D == 3 && K == 2) {
       // first tangent axis along the crease, where a fan's first vector starts
       const V e1 = planes[0].normal.cross(planes[1].normal).normalized();
@@ -681,14 +722,16 @@ protected:
     // the start's plane, its origin moved to the foot of r
     const double s0 = (start.origin - r).dot(start.normal());
     const auto unpack = [&](const Eigen::VectorXd& x, Frame<D>& f, Parameters& c) {
+      // the origin's offsets are along the start's axes (not the coordinate axes, so that
+      // MINPACK's scaling and trust region, per parameter, turn with the data)
       if constexpr(optimise_frame && R > 0 && T == D) {
-        f = start.moved(V(x.template segment<D>(R)), x.template segment<R>(0));
+        f = start.moved(V(start.axes * x.template segment<D>(R)), x.template segment<R>(0));
       } else if constexpr(optimise_frame && R > 0) {
         f = start.moved(V::Zero(), x.template segment<R>(0));
         f.origin = r + (s0 + x[R]) * f.normal();
       } else if constexpr(optimise_frame) {
         f = start;
-        f.origin += V(x.template head<D>());
+        f.origin += start.axes * x.template head<D>();
       } else {
         f = start;
       }
