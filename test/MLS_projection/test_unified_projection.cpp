@@ -524,10 +524,10 @@ MLS_TEST(invariance_under_rigid_motions_and_scaling) {
 // the same in a rotated copy when the starts and the parameters turn with the data (the start
 // frames' tangent axes from the data, the origin's offsets along the start's axes). Cube of 6000
 // points with noise sigma = 0.003 (0.043 h), 100 cold projections of P_U wedge near its edges,
-// rotated and moved as above. Measured: median difference 5e-7 h, 9% of the queries over 0.1 sigma
-// (other minima: the race's selection is not stable under rounding); with the tangent axes of
-// `tangent_basis()` (from the coordinate axes) and offsets along the coordinate axes: median
-// 4.7e-3 h, half the queries over 0.1 sigma. (Warm starts follow a Hilbert curve in the
+// rotated and moved as above. Measured: median difference 1.7e-7 h, max 0.089 h, 14 of 100 over
+// 0.1 sigma (other minima: the race's selection is not stable under rounding); with the tangent
+// axes of `tangent_basis()` (from the coordinate axes) and offsets along the coordinate axes
+// (d29d649): median 4.8e-3 h, max 0.17 h, 53 of 100. (Warm starts follow a Hilbert curve in the
 // coordinates, whose order changes with the rotation: see the manual.)
 MLS_TEST(rotation_invariance_on_a_noisy_cube) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, V3(1, 2, 3).normalized()).toRotationMatrix();

@@ -594,9 +594,9 @@ protected:
   // 3D, the major axis of the second moments, about `origin` and weighted around it, of the points
   // of `nbh` projected on the tangent plane, signed by their third moment along it. The starts of
   // a fan (sectors from the first axis) and hence the fits then move with the input under a rigid
-  // motion; `tangent_basis()` depends on the coordinate axes: on a noisy cube rotated as a whole,
-  // cold projections of P_U wedge moved by up to 0.16 h relative to the cube (see the manual,
-  // "Starts"). An isotropic or symmetric neighbourhood leaves the axis or its sign to rounding.
+  // motion, which `tangent_basis()`, built from the coordinate axes, did not allow (with the
+  // origin's offsets of minimize(), see the manual, "Invariance"). An isotropic or symmetric
+  // neighbourhood leaves the axis or its sign to rounding.
   Frame<D> frame_from_data(const V& origin, const V& n, const Neighborhood<D>& nbh) const {
     Frame<D> frame = Frame<D>::from_normal(origin, n);
     if constexpr(D == 3) {
