@@ -680,12 +680,15 @@ protected:
       n += normals[k];
     }
     if(!(n.norm() > 1e-6)) return;
-    Frame<D> frame = frame_from_data(x, n.normalized(), nbh);
+    Frame<D> frame;
     if constexpr(D == 3 && K == 2) {
       // first tangent axis along the crease, where a fan's first vector starts
+      frame = Frame<D>::from_normal(x, n.normalized());
       const V e1 = planes[0].normal.cross(planes[1].normal).normalized();
       frame.axes.col(0) = e1;
       frame.axes.col(1) = frame.normal().cross(e1);
+    } else {
+      frame = frame_from_data(x, n.normalized(), nbh);
     }
     // The member made of the planes themselves, when the space has it: on noiseless data of a
     // crease or corner, the start is then exact at once. (From `fit()`, a corner start could
