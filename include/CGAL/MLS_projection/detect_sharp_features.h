@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -71,8 +72,8 @@ struct Feature_options {
   /// A crease (or apex) of a sample's fan fit yields a helper point when it lies within this
   /// distance of the sample's projection.
   double helper_radius = 2.0;
-  /// Helper points are thinned to one per ball of this radius, and skipped within it of a
-  /// crease point already known.
+  /// The helper points of a round are thinned to one per ball of this radius, and skipped within
+  /// it of a crease point already found.
   double helper_spacing = 0.5;
   /// Helper points are moved this far off the fit's crease, to its reflex side: into the ball
   /// that the projection collapses onto the crease (the paper's Figure 4), so that a helper
@@ -260,16 +261,23 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
       constexpr int N = internal::is_wedge_fan_3<Space>::number_of_vectors;
       const double radius = options.helper_radius * h, spacing = options.helper_spacing * h,
                    offset = options.helper_offset * h;
+      // Helpers are skipped near the crease points known and near the helpers of the same
+      // round, not near the helpers of earlier rounds that missed the crease: on noisy data, a
+      // few per cent of the queries near a crease end in a fit whose C(r) lies off its crease
+      // (the fan fits the noise; a lower energy), and such a miss must not stop the tracing.
       internal::Point_grid taken(spacing);
       for(const auto& c : creases) taken.add(c.point);
       for(const V& a : apices) taken.add(a);
+      std::optional<internal::Point_grid> proposed;
       std::vector<Point> helpers;
       std::vector<std::size_t> near;
       const auto propose = [&](const V& x) {
         if(!x.allFinite()) return;
         taken.near(x, spacing, near);
         if(!near.empty()) return;
-        taken.add(x);
+        proposed->near(x, spacing, near);
+        if(!near.empty()) return;
+        proposed->add(x);
         helpers.push_back(KT::to_point(x));
       };
       // apex helpers are thinned among themselves only: a corner must not be hidden by the
@@ -313,6 +321,7 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
       std::vector<Result> sources;
       for(int round = 0; round < options.max_helper_rounds; ++round) {
         helpers.clear();
+        proposed.emplace(spacing);
         if(round == 0)
           for(const Result& r : projected_samples) propose_from(r);
         else
@@ -327,6 +336,7 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
           if(collect(r)) {
             ++out.statistics.helper_hits;
             sources.push_back(r);
+            taken.add(KT::to_eigen(r.point));
           }
       }
     }
