@@ -253,9 +253,10 @@ protected:
     Fit best;
     if(warm && warm->valid_) {
       // The last fit continued: C(r) hardly moves from the closest point C0 of r on it, so the
-      // ball gathered around C0 needs only a small margin (fewer residuals: a cheaper QR at each
-      // iteration; a C(r) that leaves it is gathered again below), and Levin's frame is not
-      // needed (measured on the noisy cube: 1.82 -> 1.43 ms per query, see the manual).
+      // ball gathered around C0 needs only a small margin (fewer residuals: a cheaper
+      // factorisation at each iteration; a C(r) that leaves it is gathered again below), and
+      // Levin's frame is not needed (measured on the noisy cube: 1.82 -> 1.43 ms per query, see
+      // the manual).
       const Fit& last = warm->fit_;
       const V C0 = last.frame.to_local(space_.closest_point(last.c, last.frame.to_frame(rs)).point);
       if(C0.allFinite()) {

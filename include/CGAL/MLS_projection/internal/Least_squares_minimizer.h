@@ -148,6 +148,74 @@ struct Residual_jacobian_functor : Residual_functor<ResidualFunction> {
   mutable bool first_df = true;
 };
 
+// The problem of the m residuals presented to the optimiser as n + 1 residuals (n: the
+// parameters; used for m > 2n + 1). MINPACK factorises its Jacobian at every iteration (a QR with
+// column pivoting), which for the m x n Jacobians of the closest-point operators took about 40% of
+// their time (user manual, "Linear algebra of an iteration"). The residuals handed to it are
+// (|f|, 0, ..., 0), of the norm of the m residuals f; at each Jacobian, the m x n matrix J is
+// replaced by R, the Cholesky factor of J^T J = R^T R (a QR of J when J^T J is not numerically
+// positive definite), and the optimiser's residual vector by (z, e), z = R^-T J^T f and
+// e^2 = |f|^2 - |z|^2. The linear least-squares problems min |J p + f| and min |R p + (z, e)|
+// have the same solutions and residual norms, so the optimiser takes the same steps, up to
+// rounding; the stop rules of Residual_functor see the m residuals.
+template <class ResidualFunction, class JacobianFunction>
+struct Normal_equations_functor : Residual_jacobian_functor<ResidualFunction, JacobianFunction> {
+  using Base = Residual_jacobian_functor<ResidualFunction, JacobianFunction>;
+  using typename Base::InputType;
+  using typename Base::ValueType;
+  using typename Base::JacobianType;
+
+  Normal_equations_functor(const ResidualFunction* f, const JacobianFunction* j, int inputs, int values)
+    : Base(f, j, inputs, inputs + 1), full_m_(values) {}
+
+  int operator()(const InputType& x, ValueType& r) const {
+    full_f_.resize(full_m_);
+    const int status = Base::operator()(x, full_f_);
+    f_at_ = x;
+    r.setZero(this->n_ + 1);
+    r[0] = full_f_.stableNorm();
+    return status;
+  }
+
+  int df(const InputType& x, JacobianType& J) const {
+    const Eigen::Index n = this->n_;
+    if(f_at_.size() != x.size() || f_at_ != x) {
+      full_f_.resize(full_m_);
+      (*this->f_)(x, full_f_);
+      f_at_ = x;
+    }
+    full_J_.resize(full_m_, n);
+    Base::df(x, full_J_);
+    G_.setZero(n, n);
+    G_.template selfadjointView<Eigen::Lower>().rankUpdate(full_J_.transpose());
+    Eigen::LLT<Eigen::MatrixXd> llt(G_);
+    J.setZero(n + 1, n);
+    Eigen::VectorXd z;
+    if(llt.info() == Eigen::Success && llt.matrixLLT().diagonal().minCoeff() > 0) {
+      J.topRows(n) = llt.matrixU();
+      z = llt.matrixL().solve(full_J_.transpose() * full_f_);
+    } else {
+      Eigen::HouseholderQR<Eigen::MatrixXd> qr(full_J_);
+      J.topRows(n) = qr.matrixQR().topRows(n).template triangularView<Eigen::Upper>();
+      Eigen::VectorXd qtf = full_f_;
+      qtf.applyOnTheLeft(qr.householderQ().adjoint());
+      z = qtf.head(n);
+    }
+    const double f2 = full_f_.squaredNorm();
+    fvec->head(n) = z;
+    (*fvec)[n] = std::sqrt((std::max)(0., f2 - z.squaredNorm()));
+    return 0;
+  }
+
+  int full_m_;
+  Eigen::VectorXd* fvec = nullptr; // the optimiser's residual vector, replaced at each Jacobian
+  mutable Eigen::VectorXd full_f_, f_at_;
+  mutable Eigen::MatrixXd full_J_, G_;
+};
+
+template <class F, class = void> struct has_fvec : std::false_type {};
+template <class F> struct has_fvec<F, std::void_t<decltype(std::declval<F&>().fvec)>> : std::true_type {};
+
 template <class F, class = void> struct has_scaling : std::false_type {};
 template <class F> struct has_scaling<F, std::void_t<decltype(std::declval<F&>().diag)>> : std::true_type {};
 
@@ -163,6 +231,7 @@ Minimizer_report run_levenberg_marquardt(Functor& functor, const ResidualFunctio
       functor.diag = &lm.diag;
     }
   }
+  if constexpr(has_fvec<Functor>::value) functor.fvec = &lm.fvec;
   lm.parameters.ftol = settings.tolerance;
   lm.parameters.xtol = settings.tolerance;
   lm.parameters.maxfev = settings.max_evaluations;
@@ -208,10 +277,15 @@ Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, int 
   return run_levenberg_marquardt(functor, residuals, m, x0, settings);
 }
 
-/// The same with the Jacobian computed by `jacobian(x, J)` (an m x n matrix).
+/// The same with the Jacobian computed by `jacobian(x, J)` (an m x n matrix); the optimiser
+/// sees n + 1 residuals when m > 2n + 1 (see `Normal_equations_functor`).
 template <class ResidualFunction, class JacobianFunction>
 Minimizer_report minimize_sum_of_squares(const ResidualFunction& residuals, const JacobianFunction& jacobian, int m,
                                          const Eigen::VectorXd& x0, const Minimizer_settings& settings) {
+  if(m > 2 * x0.size() + 1) {
+    Normal_equations_functor<ResidualFunction, JacobianFunction> functor(&residuals, &jacobian, int(x0.size()), m);
+    return run_levenberg_marquardt(functor, residuals, m, x0, settings);
+  }
   Residual_jacobian_functor<ResidualFunction, JacobianFunction> functor(&residuals, &jacobian, int(x0.size()), m);
   return run_levenberg_marquardt(functor, residuals, m, x0, settings);
 }
