@@ -15,6 +15,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
