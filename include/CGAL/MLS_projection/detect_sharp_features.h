@@ -16,7 +16,6 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
-#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -268,16 +267,16 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
       internal::Point_grid taken(spacing);
       for(const auto& c : creases) taken.add(c.point);
       for(const V& a : apices) taken.add(a);
-      std::optional<internal::Point_grid> proposed;
+      internal::Point_grid proposed(spacing);
       std::vector<Point> helpers;
       std::vector<std::size_t> near;
       const auto propose = [&](const V& x) {
         if(!x.allFinite()) return;
         taken.near(x, spacing, near);
         if(!near.empty()) return;
-        proposed->near(x, spacing, near);
+        proposed.near(x, spacing, near);
         if(!near.empty()) return;
-        proposed->add(x);
+        proposed.add(x);
         helpers.push_back(KT::to_point(x));
       };
       // apex helpers are thinned among themselves only: a corner must not be hidden by the
@@ -321,7 +320,7 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
       std::vector<Result> sources;
       for(int round = 0; round < options.max_helper_rounds; ++round) {
         helpers.clear();
-        proposed.emplace(spacing);
+        proposed = internal::Point_grid(spacing);
         if(round == 0)
           for(const Result& r : projected_samples) propose_from(r);
         else
