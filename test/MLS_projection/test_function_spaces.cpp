@@ -706,25 +706,35 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
 
 } // namespace
 
-// The derivative of each weight with respect to the squared distance against central
-// differences, in units of the squared support radius R^2 (relative step 1e-5: truncation error
-// of order 1e-10, rounding 1e-11), and the overload given the weight equal to it exactly; zero
-// beyond the support.
+// The first and second derivatives of each weight with respect to the squared distance against
+// central differences, in units of the squared support radius R^2 (relative step 1e-5: truncation
+// error of order 1e-10, rounding 1e-11 for the first derivative, 1e-6 for the second), the
+// overload given the weight equal to it exactly, `evaluate()` equal to the three up to rounding;
+// zero beyond the support.
 MLS_TEST(weight_derivatives) {
   const double h = 0.3;
-  for(const MLS::Weight_kind kind : {MLS::Weight_kind::GAUSSIAN, MLS::Weight_kind::WENDLAND}) {
+  for(const MLS::Weight_kind kind : {MLS::Weight_kind::POLYNOMIAL, MLS::Weight_kind::GAUSSIAN, MLS::Weight_kind::WENDLAND}) {
     const MLS::Weight_function w(kind, h, kind == MLS::Weight_kind::GAUSSIAN ? 4. : 2.5);
     const double R2 = w.support_radius() * w.support_radius();
-    double worst = 0;
+    double worst = 0, worst_second = 0;
     for(double t = 0.01; t < 1; t += 0.01) {
       const double d2 = t * R2, eps = 1e-5 * d2;
       const double fd = (w(d2 + eps) - w(d2 - eps)) / (2 * eps);
+      const double fd2 = (w.derivative(d2 + eps) - w.derivative(d2 - eps)) / (2 * eps);
       worst = std::max(worst, std::abs(w.derivative(d2) - fd) * R2);
+      double value = 0, first = 0, second = 0;
+      MLS_CHECK(w.evaluate(d2, value, first, second));
+      MLS_CHECK_NEAR(value, w(d2), 1e-15);
+      MLS_CHECK_NEAR(first, w.derivative(d2), 1e-14 * std::abs(first));
+      worst_second = std::max(worst_second, std::abs(second - fd2) * R2 * R2);
       MLS_CHECK(w.derivative(d2, w(d2)) == w.derivative(d2));
     }
-    std::cout << "       " << (kind == MLS::Weight_kind::GAUSSIAN ? "Gaussian" : "Wendland")
-              << ": worst error of the derivative " << worst << " / R^2\n";
+    const char* name = kind == MLS::Weight_kind::GAUSSIAN ? "Gaussian" : kind == MLS::Weight_kind::WENDLAND ? "Wendland" : "polynomial";
+    std::cout << "       " << name << ": worst error of the derivatives " << worst << " / R^2, " << worst_second << " / R^4\n";
     MLS_CHECK_LE(worst, 1e-8);
+    MLS_CHECK_LE(worst_second, 1e-5);
+    double value = 0, first = 0, second = 0;
+    MLS_CHECK(!w.evaluate(1.5 * R2, value, first, second));
     MLS_CHECK(w.derivative(1.5 * R2) == 0. && w.derivative(1.5 * R2, 0.) == 0. && w(1.5 * R2) == 0.);
   }
 }

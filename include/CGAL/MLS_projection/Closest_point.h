@@ -27,8 +27,9 @@ struct Closest_point {
   double signed_distance = 0;
   /// `true` when `point` lies on a crease or at the apex of \f$f\f$ (a \f$C^0\f$ feature).
   bool is_singular = false;
-  /// The unit direction of the crease through `point` (3D, on a crease); zero at an apex,
-  /// at smooth points and in 2D.
+  /// The unit direction of the crease through `point` (3D, on a crease, or at an apex that lies
+  /// on a crease, as that of a fan whose faces lie in two planes); zero at a corner, at smooth
+  /// points and in 2D.
   internal::Vec<D> direction = internal::Vec<D>::Zero();
 };
 

@@ -5,8 +5,10 @@
 #define CGAL_MLS_PROJECTION_LEVIN_PROJECTION_H
 
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/internal/Least_squares_minimizer.h>
+#include <CGAL/MLS_projection/internal/Newton_minimizer.h>
+#include <CGAL/MLS_projection/internal/levin_energy.h>
 #include <CGAL/MLS_projection/internal/Operator_base.h>
+#include <CGAL/MLS_projection/internal/weighted_pca.h>
 
 #include <cmath>
 #include <memory>
@@ -21,10 +23,12 @@ namespace MLS {
 /// <b>Phase 1</b> finds the reference frame \f$H_{r,q}\f$: the hyperplane through \f$q\f$ with
 /// normal \f$n = (q - r)/|q - r|\f$ minimising the weighted mean squared distance of the input
 /// points to it, with weights \f$\omega(|p_i - q|)\f$ (equation 1). The frame is parameterised by
-/// its unit normal \f$n\f$ (exponential map around the start normal) and the signed distance
+/// its unit normal \f$n\f$ (exponential map around the current normal) and the signed distance
 /// \f$t\f$ with \f$q = r + t\,n\f$, which stays well defined when \f$r\f$ is on the surface.
-/// The start is the weighted PCA plane of the `k` nearest neighbours of \f$r\f$; the minimiser is
-/// Levenberg-Marquardt (see `Least_squares_minimizer`).
+/// The start is the weighted PCA plane of the points around \f$r\f$ (those of its `k` nearest
+/// neighbours when \f$r\f$ is further than the weight's support from the data); the minimiser is
+/// Newton's method on the closed-form gradient and Hessian of the energy, damped as
+/// Levenberg-Marquardt (user manual, "Optimiser").
 ///
 /// <b>Phase 2</b> fits a member \f$f\f$ of the function space over \f$H\f$ by weighted linear least
 /// squares with the weights of phase 1 (equation 2), and returns
@@ -81,68 +85,55 @@ public:
     Projection_status status = Projection_status::CONVERGED; ///< why phase 1 failed, if it did
   };
 
-  /// Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood.
+  /// Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood
+  /// (the points within the weight's support plus a margin of the frame origin).
   Frame find_frame(const Vec& r, internal::Neighborhood<D>& nbh) const {
     Frame frame;
-    const auto init = this->initial_frame(r, minimum_points());
-    if(init.status != Projection_status::CONVERGED) {
-      frame.status = init.status;
-      return frame;
-    }
-    const double h = this->h_;
-    const double support = this->weight_.support_radius();
-    Vec n0 = init.normal;
-    double s0 = (init.origin - r).dot(n0) / h;
-    nbh.gather(this->samples(), init.origin, this->gather_radius());
-
-    std::vector<double> w, z;
-    internal::Minimizer_settings settings;
-    settings.tolerance = this->options_.tolerance;
+    const double h = this->h_, support = this->weight_.support_radius();
+    Start start;
+    frame.status = start_frame(r, nbh, start);
+    if(frame.status != Projection_status::CONVERGED) return frame;
+    // The state of the minimisation: the frame normal and the origin's offset along it from r,
+    // in units of h. The Newton steps are in the tangent coordinates of the normal's exponential
+    // map at the current normal, and the offset.
+    struct State {
+      Vec n;
+      double s;
+    };
+    State x{start.normal, start.offset};
+    thread_local std::vector<Vec> y; // the neighbourhood relative to r, in units of h
+    const auto evaluate = [&](const State& st, double& E, Step& g, Step_matrix& H) {
+      return internal::levin_energy<D>(y, st.n, st.s, unit_weight_, E, g, H);
+    };
+    const auto retract = [](const State& st, const Step& delta) {
+      const auto basis = internal::tangent_basis<D>(st.n);
+      return State{internal::exp_map<D>(st.n, basis, delta), st.s + delta[D - 1]};
+    };
+    internal::Newton_settings settings;
+    settings.step_tolerance = std::sqrt(this->options_.tolerance);
     settings.max_evaluations = this->options_.max_evaluations;
-    Vec q = init.origin, n = n0;
     for(int round = 0; round < 5; ++round) {
       if(nbh.size() < minimum_points()) {
         frame.status = Projection_status::TOO_FEW_NEIGHBORS;
         return frame;
       }
-      const auto basis = internal::tangent_basis<D>(n0);
-      const auto frame_of = [&](const Eigen::VectorXd& x, Vec& qx, Vec& nx) {
-        nx = internal::exp_map<D>(n0, basis, x);
-        qx = r + (x[D - 1] * h) * nx;
-      };
-      w.resize(nbh.size());
-      z.resize(nbh.size());
-      const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& res) {
-        Vec qx, nx;
-        frame_of(x, qx, nx);
-        double W = 0;
-        for(std::size_t i = 0; i < nbh.size(); ++i) {
-          const Vec d = nbh.points[i] - qx;
-          w[i] = this->weight_(d.squaredNorm());
-          z[i] = d.dot(nx) / h;
-          W += w[i];
-        }
-        if(!(W > 0)) {
-          res.setConstant(1e3); // the frame left the points: a plateau the minimiser backs off from
-          return;
-        }
-        for(std::size_t i = 0; i < nbh.size(); ++i) res[i] = std::sqrt(w[i] / W) * z[i];
-      };
-      Eigen::VectorXd x0 = Eigen::VectorXd::Zero(D);
-      x0[D - 1] = s0;
-      const auto report = internal::minimize_sum_of_squares(residuals, int(nbh.size()), x0, settings);
+      y.resize(nbh.size());
+      for(std::size_t i = 0; i < nbh.size(); ++i) y[i] = (nbh.points[i] - r) / h;
+      const internal::Newton_report report = internal::minimize_newton<D>(x, evaluate, retract, settings);
       frame.iterations += report.iterations;
       frame.converged = report.converged;
-      frame_of(report.x, q, n);
+      if(!report.valid) { // no point of positive weight around the frame: the start left the data
+        frame.status = Projection_status::TOO_FEW_NEIGHBORS;
+        return frame;
+      }
+      const Vec q = r + (x.s * h) * x.n;
       if(nbh.covers(q, support)) break;
-      // The origin moved out of the gathered ball: gather around it and continue from there.
-      n0 = n;
-      s0 = report.x[D - 1];
+      // the origin moved out of the gathered ball: gather around it and continue from there
       nbh.gather(this->samples(), q, this->gather_radius());
     }
-    frame.origin = q;
-    frame.normal = n;
-    if(!q.allFinite() || !n.allFinite()) frame.status = Projection_status::DEGENERATE_NEIGHBORHOOD;
+    frame.origin = r + (x.s * h) * x.n;
+    frame.normal = x.n;
+    if(!frame.origin.allFinite() || !frame.normal.allFinite()) frame.status = Projection_status::DEGENERATE_NEIGHBORHOOD;
     return frame;
   }
 
@@ -150,7 +141,7 @@ public:
   Result project(const Point& query) const {
     const Vec r = this->samples().to_local(query);
     if(!r.allFinite()) return this->failure(query, Projection_status::INVALID_QUERY);
-    internal::Neighborhood<D> nbh;
+    thread_local internal::Neighborhood<D> nbh;
     Frame frame = find_frame(r, nbh);
     if(frame.status != Projection_status::CONVERGED) return this->failure(query, frame.status);
 
@@ -159,10 +150,10 @@ public:
     Vec q = frame.origin;
     Vec n = frame.normal * this->orientation(q, frame.normal, nbh);
     const auto tangents = internal::tangent_basis<D>(n);
-    std::vector<Vec> local;
-    std::vector<double> w;
-    local.reserve(nbh.size());
-    w.reserve(nbh.size());
+    thread_local std::vector<Vec> local;
+    thread_local std::vector<double> w;
+    local.clear();
+    w.clear();
     for(const Vec& p : nbh.points) {
       const Vec d = p - q;
       const double wi = this->weight_(d.squaredNorm());
@@ -211,6 +202,46 @@ public:
   }
 
 private:
+  using Step = Eigen::Matrix<double, D, 1>;         // (tangent angles of the normal, offset / h)
+  using Step_matrix = Eigen::Matrix<double, D, D>;
+
+  struct Start {
+    Vec normal;
+    double offset = 0; // of the origin along the normal from r, in units of h
+  };
+
+  // The start of phase 1 and its neighbourhood: the weighted PCA plane of the points around r
+  // (weights of the projection centred at r) when r is within the weight's support of the
+  // data, else that of its k nearest neighbours (`initial_frame()`); `nbh` is gathered around
+  // the start's origin.
+  Projection_status start_frame(const Vec& r, internal::Neighborhood<D>& nbh, Start& start) const {
+    const double h = this->h_;
+    if(this->samples().size() < minimum_points()) return Projection_status::TOO_FEW_NEIGHBORS;
+    if(!this->has_bandwidth()) return Projection_status::DEGENERATE_NEIGHBORHOOD;
+    nbh.gather(this->samples(), r, this->gather_radius());
+    thread_local std::vector<double> w;
+    w.resize(nbh.size());
+    std::size_t weighted = 0;
+    for(std::size_t i = 0; i < nbh.size(); ++i) {
+      w[i] = this->weight_((nbh.points[i] - r).squaredNorm());
+      if(w[i] > 0) ++weighted;
+    }
+    if(weighted >= minimum_points()) {
+      const internal::Pca<D> pca = internal::weighted_pca<D>(nbh.points, w);
+      if(!pca.valid || pca.is_degenerate()) return Projection_status::DEGENERATE_NEIGHBORHOOD;
+      start.normal = pca.minor_axis();
+      start.offset = (pca.centroid - r).dot(start.normal) / h;
+      return Projection_status::CONVERGED;
+    }
+    const auto init = this->initial_frame(r, minimum_points());
+    if(init.status != Projection_status::CONVERGED) return init.status;
+    start.normal = init.normal;
+    start.offset = (init.origin - r).dot(init.normal) / h;
+    nbh.gather(this->samples(), init.origin, this->gather_radius());
+    return Projection_status::CONVERGED;
+  }
+
+  using Base::unit_weight_;
   FunctionSpace space_;
 };
 

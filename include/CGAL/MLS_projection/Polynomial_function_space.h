@@ -6,6 +6,7 @@
 
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/QR>
 
 #include <cmath>
@@ -18,10 +19,10 @@ namespace MLS {
 /// All polynomials of total degree at most 2 over the frame's tangent hyperplane:
 /// \f$f(x) = c_0 + c_1 x + c_2 x^2\f$ in 2D and
 /// \f$f(x,y) = c_0 + c_1 x + c_2 y + c_3 x^2 + c_4 xy + c_5 y^2\f$ in 3D, the classical second
-/// phase of Levin's projection. The fit is a weighted linear least-squares problem, solved with
-/// a complete orthogonal decomposition on coordinates scaled to unit spread, so that a
-/// neighbourhood that does not determine every coefficient (e.g. points on a line in 3D)
-/// gets the minimum-norm fit instead of a failure.
+/// phase of Levin's projection. The fit is a weighted linear least-squares problem on coordinates
+/// scaled to unit spread, solved by Cholesky when well conditioned and else with a complete
+/// orthogonal decomposition, so that a neighbourhood that does not determine every coefficient
+/// (e.g. points on a line in 3D) gets the minimum-norm fit instead of a failure.
 ///
 /// \cgalModels `MLSGraphFunctionSpace`
 /// \tparam D the ambient dimension, 2 or 3
@@ -60,12 +61,21 @@ public:
       A.noalias() += w[i] * m * m.transpose();
       b.noalias() += w[i] * p[i][D - 1] * m;
     }
-    Eigen::CompleteOrthogonalDecomposition<Matrix> cod(A);
-    cod.setThreshold(1e-10);
-    Parameters c = cod.solve(b);
+    // Cholesky when the system is well conditioned (the usual case), else the minimum-norm fit
+    Parameters c;
+    const Eigen::LDLT<Matrix> ldlt(A);
+    const auto pivots = ldlt.vectorD();
+    if(ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-10 * pivots.maxCoeff()) {
+      c = ldlt.solve(b);
+    } else {
+      Eigen::CompleteOrthogonalDecomposition<Matrix> cod(A);
+      cod.setThreshold(1e-10);
+      c = cod.solve(b);
+    }
     if(!c.allFinite()) c.setZero();
     // Undo the scaling: a coefficient of a monomial of degree d is divided by s^d.
-    for(int j = 0; j < number_of_parameters; ++j) c[j] /= std::pow(s, degree(j));
+    const double scale[3] = {1., 1. / s, 1. / (s * s)};
+    for(int j = 0; j < number_of_parameters; ++j) c[j] *= scale[degree(j)];
     return c;
   }
 

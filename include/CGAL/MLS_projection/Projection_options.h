@@ -22,7 +22,7 @@ struct Projection_options {
   /// 0 (default): 6 for curves in 2D, 16 for surfaces in 3D.
   int k = 0;
   /// The kind of weight function.
-  Weight_kind weight = Weight_kind::GAUSSIAN;
+  Weight_kind weight = Weight_kind::POLYNOMIAL;
   /// The Gaussian weight is truncated at `gaussian_cutoff * h`.
   double gaussian_cutoff = 4.;
   /// The support radius of Wendland's weight, in units of \f$h\f$.

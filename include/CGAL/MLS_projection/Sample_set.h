@@ -5,20 +5,16 @@
 #define CGAL_MLS_PROJECTION_SAMPLE_SET_H
 
 #include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/Point_tree.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
-#include <CGAL/Dimension.h>
-#include <CGAL/Search_traits.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
-#include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -27,7 +23,7 @@ namespace MLS {
 /// \ingroup PkgMLSProjectionRef
 /// The input of every projection operator: the input points (and optional unit normals)
 /// copied once, translated so that their centroid is the origin, and a kd-tree over them
-/// (CGAL's spatial searching) for k-nearest and ball queries.
+/// for k-nearest and ball queries.
 ///
 /// Centring makes scans with large coordinate offsets (e.g. UTM coordinates, offsets of
 /// \f$10^6\f$) as accurate as centred ones: all computations are done in double precision
@@ -52,27 +48,6 @@ public:
 
 private:
   using KT = internal::Kernel_types<GeomTraits, D>;
-
-  struct Coordinate_iterator {
-    using result_type = const double*;
-    const double* operator()(const Local_point& p) const { return p.data(); }
-    const double* operator()(const Local_point& p, int) const { return p.data() + D; }
-  };
-  // Index -> local point, as a CGAL lvalue property map.
-  struct Index_map {
-    using key_type = std::size_t;
-    using value_type = Local_point;
-    using reference = const Local_point&;
-    using category = boost::lvalue_property_map_tag;
-    const Local_point* points = nullptr;
-    friend reference get(const Index_map& m, std::size_t i) { return m.points[i]; }
-  };
-  using Base_traits = CGAL::Search_traits<double, Local_point, const double*, Coordinate_iterator, CGAL::Dimension_tag<D>>;
-  using Traits = CGAL::Search_traits_adapter<std::size_t, Index_map, Base_traits>;
-  using Distance = CGAL::Distance_adapter<std::size_t, Index_map, CGAL::Euclidean_distance<Base_traits>>;
-  using K_search = CGAL::Orthogonal_k_neighbor_search<Traits, Distance>;
-  using Tree = typename K_search::Tree;
-  using Sphere = CGAL::Fuzzy_sphere<Traits>;
 
 public:
   /// Copies the points of `points` (and the normals, when the named parameter `normal_map`
@@ -115,7 +90,7 @@ public:
     points_.reserve(world.size());
     for(const auto& p : world) points_.push_back(p - centre_);
     normals_ = std::move(normals);
-    build_tree();
+    tree_ = internal::Point_tree<D>(points_);
   }
 
   Sample_set(const Sample_set&) = delete;
@@ -140,35 +115,35 @@ public:
   /// The `i`-th unit normal (null if the input normal was null or not finite). \pre `has_normals()`
   const Local_point& local_normal(std::size_t i) const { return normals_[i]; }
 
-  /// Appends to `out` the indices of the `k` points nearest to `x` (local coordinates),
-  /// sorted by index.
+  /// Writes to `out` the indices of the `k` points nearest to `x` (local coordinates), nearest
+  /// first (ties by index).
   void k_nearest(const Local_point& x, std::size_t k, std::vector<std::size_t>& out) const {
-    out.clear();
-    if(points_.empty() || k == 0) return;
-    K_search search(*tree_, x, static_cast<unsigned int>((std::min)(k, points_.size())), 0., true,
-                    Distance(Index_map{points_.data()}));
-    for(const auto& it : search) out.push_back(it.first);
-    std::sort(out.begin(), out.end());
+    thread_local std::vector<std::pair<double, std::size_t>> found;
+    tree_.k_nearest(x, k, found);
+    out.resize(found.size());
+    for(std::size_t i = 0; i < found.size(); ++i) out[i] = found[i].second;
   }
 
   /// The distance from `x` (local coordinates) to its `k`-th nearest input point (0 if there is none).
   double kth_neighbor_distance(const Local_point& x, std::size_t k) const {
-    if(points_.empty() || k == 0) return 0.;
-    K_search search(*tree_, x, static_cast<unsigned int>((std::min)(k, points_.size())), 0., true,
-                    Distance(Index_map{points_.data()}));
-    double d2 = 0;
-    for(const auto& it : search) d2 = (std::max)(d2, it.second);
-    return std::sqrt(d2);
+    thread_local std::vector<std::pair<double, std::size_t>> found;
+    tree_.k_nearest(x, k, found);
+    return found.empty() ? 0. : std::sqrt(found.back().first);
   }
 
-  /// Appends to `out` the indices of the points within distance `radius` of `x`
-  /// (local coordinates), sorted by index so that sums over them do not depend on the tree.
+  /// Calls `f(i, p)` for every input point `p` (local coordinates, index `i`) within distance
+  /// `radius` of `x`, in an order that depends only on the input (so that sums over the points
+  /// are the same whatever the threads).
+  template <class F>
+  void for_each_in_ball(const Local_point& x, double radius, F&& f) const {
+    tree_.for_each_in_ball(x, radius, std::forward<F>(f));
+  }
+
+  /// Writes to `out` the indices of the points within distance `radius` of `x` (local
+  /// coordinates), in the order of `for_each_in_ball()`.
   void in_ball(const Local_point& x, double radius, std::vector<std::size_t>& out) const {
     out.clear();
-    if(points_.empty()) return;
-    Sphere sphere(x, radius, 0., Traits(Index_map{points_.data()}));
-    tree_->search(std::back_inserter(out), sphere);
-    std::sort(out.begin(), out.end());
+    tree_.for_each_in_ball(x, radius, [&](std::size_t i, const Local_point&) { out.push_back(i); });
   }
 
   /// The mean, over input points, of the distance to their `k`-th nearest other input point.
@@ -184,22 +159,11 @@ public:
   }
 
 private:
-  void build_tree() {
-    // CGAL's Kd_tree::build() asserts a non-empty point set (no finite input point: no tree;
-    // every query function returns early on an empty set)
-    if(points_.empty()) return;
-    std::vector<std::size_t> indices(points_.size());
-    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    tree_ = std::make_unique<Tree>(indices.begin(), indices.end(), typename Tree::Splitter(),
-                                   Traits(Index_map{points_.data()}));
-    tree_->build(); // before any concurrent query
-  }
-
   std::vector<Local_point> points_;
   std::vector<Local_point> normals_;
   Local_point centre_ = Local_point::Zero();
   std::size_t ignored_ = 0;
-  std::unique_ptr<Tree> tree_;
+  internal::Point_tree<D> tree_;
 };
 
 } // namespace MLS

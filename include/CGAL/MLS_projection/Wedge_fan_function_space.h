@@ -47,7 +47,9 @@ namespace MLS {
 ///
 /// A point is singular when its closest point is on a ray (a crease, `direction` = the ray),
 /// unless the two cones meeting there are coplanar (normals within \f$10^{-9}\f$), or at the
-/// apex (unless all cones are coplanar).
+/// apex (unless all cones are coplanar; when the faces lie in two planes, the apex is a point of
+/// their crease and `direction` is the crease's). A closest point within `ray_tolerance` of a
+/// ray is on that ray.
 ///
 /// \cgalModels `MLSFunctionSpace`
 /// \tparam D the ambient dimension, 2 or 3
@@ -69,6 +71,10 @@ public:
 
   /// The tolerance on the normals of two adjacent cones under which they are one plane.
   static constexpr double coplanarity_tolerance = 1e-9;
+  /// A closest point within this distance (times \f$1 + |x|\f$, in frame units: \f$h\f$ for the
+  /// operators) of a ray of the fan is on that ray: the crease of an exact fit of sampled data is
+  /// known to the fit's precision only (residuals of about \f$10^{-13}\f$).
+  static constexpr double ray_tolerance = 1e-11;
 
   /// The name of the space, `"wedge_fan"`.
   static const char* name() { return "wedge_fan"; }
@@ -276,6 +282,7 @@ private:
     std::array<V, number_of_vectors> fn;     // 3D: normal of cone j = (v[j], v[j+1]); 2D: normal of ray j
     std::array<bool, number_of_vectors> ok;  // 3D: cone j is not degenerate
     std::array<double, number_of_vectors> cn{}; // 3D: v[j] . v[j+1]
+    std::array<double, number_of_vectors> inverse_det{}; // 3D: 1 / (1 - cn[j]^2) for a cone that is not degenerate
     std::array<int, number_of_vectors> order; // index (in the parameters) of the j-th sorted vector
     std::array<std::array<V, 2>, number_of_vectors> dv; // d v[j] / d (its parameters)
   };
@@ -318,7 +325,8 @@ private:
         const V n = f.v[j].cross(f.v[k]);
         const double len = n.norm();
         f.cn[j] = f.v[j].dot(f.v[k]);
-        f.ok[j] = len > 1e-12;
+        f.ok[j] = len > 1e-12 && 1. - f.cn[j] * f.cn[j] > 0.;
+        f.inverse_det[j] = f.ok[j] ? 1. / (1. - f.cn[j] * f.cn[j]) : 0.;
         f.fn[j] = f.ok[j] ? V(((gap > M_PI) ? -1. : 1.) * n / len) : V::Zero();
       }
     }
@@ -381,25 +389,23 @@ private:
       return ok[i] && ok[j] && fn[i].dot(fn[j]) > 0 && fn[i].cross(fn[j]).norm() <= coplanarity_tolerance;
     };
 
-    // Nearest piece: 0 = apex, 1 = interior of cone `which`, 2 = ray `which`.
+    // Nearest piece: 0 = apex, 1 = interior of cone `which`, 2 = ray `which`. The squared
+    // distances: |x|^2 to the apex, (x . n)^2 to a cone's plane (its unit normal n) when the foot
+    // is inside the cone, |x - t v|^2 to a ray (t = x . v > 0); the foot of the nearest only is built.
+    const double x2 = x.squaredNorm();
     int kind = 0, which = -1;
-    double best = x.squaredNorm(), ca = 0., cb = 0.;
-    V point = V::Zero();
+    double best = x2, ca = 0., cb = 0.;
     std::array<double, N> xv; // x . v[j]
     for(int j = 0; j < N; ++j) xv[j] = x.dot(v[j]);
     for(int j = 0; j < N; ++j) {
       if(!ok[j]) continue;
       const int k = (j + 1) % N;
       const double cjk = f.cn[j], rj = xv[j], rk = xv[k];
-      const double det = 1. - cjk * cjk;
-      if(!(det > 0.)) continue;
-      const double alpha = (rj - cjk * rk) / det, beta = (rk - cjk * rj) / det;
-      if(alpha < 0. || beta < 0.) continue;
-      const V y = alpha * v[j] + beta * v[k];
-      const double e = (x - y).squaredNorm();
+      const double alpha = (rj - cjk * rk) * f.inverse_det[j], beta = (rk - cjk * rj) * f.inverse_det[j];
+      if(!(alpha >= 0.) || !(beta >= 0.)) continue;
+      const double s = x.dot(fn[j]), e = s * s;
       if(e < best) {
         best = e;
-        point = y;
         kind = 1;
         which = j;
         ca = alpha;
@@ -409,16 +415,32 @@ private:
     for(int j = 0; j < N; ++j) {
       const double t = xv[j];
       if(!(t > 0.)) continue;
-      const V y = t * v[j];
-      const double e = (x - y).squaredNorm();
+      const double e = (x - t * v[j]).squaredNorm(); // not |x|^2 - t^2, which cancels on the ray
       if(e < best) {
         best = e;
-        point = y;
         kind = 2;
         which = j;
         ca = t;
       }
     }
+    // A foot within `ray_tolerance` of a boundary ray of its cone is on that ray (on the crease,
+    // when the cones there are not coplanar): a query on a sampled crease is not to fall on a face
+    // by the error of an exact fit.
+    if(kind == 1) {
+      const int k = (which + 1) % N;
+      const double sine = std::sqrt(1. - f.cn[which] * f.cn[which]), tolerance = ray_tolerance * (1. + std::sqrt(x2));
+      if(cb * sine <= tolerance) {
+        kind = 2;
+        ca = xv[which];
+      } else if(ca * sine <= tolerance) {
+        kind = 2;
+        which = k;
+        ca = xv[k];
+      }
+    }
+    V point = V::Zero();
+    if(kind == 1) point = ca * v[which] + cb * v[(which + 1) % N];
+    else if(kind == 2) point = ca * v[which];
 
     Closest_point<3> cp;
     cp.point = point;
@@ -438,13 +460,19 @@ private:
       }
     } else {
       // The apex: sum the normals of the distinct faces (a run of coplanar cones is one face).
+      // When the faces lie in two planes only, the apex is a point of their crease: its direction
+      // is the crease's.
       V sum = V::Zero();
-      int first = -1;
-      bool all_coplanar = true;
+      int first = -1, second = -1;
+      bool all_coplanar = true, two_planes = true;
       for(int j = 0; j < N; ++j) {
         if(!ok[j]) continue;
         if(first < 0) first = j;
-        else if(!coplanar(first, j)) all_coplanar = false;
+        else if(!coplanar(first, j)) {
+          all_coplanar = false;
+          if(second < 0) second = j;
+          else if(!coplanar(second, j)) two_planes = false;
+        }
         if(!coplanar((j + N - 1) % N, j)) sum += fn[j];
       }
       if(first >= 0 && all_coplanar) {
@@ -452,6 +480,10 @@ private:
       } else {
         cp.is_singular = true;
         cp.normal = sum;
+        if(second >= 0 && two_planes) {
+          const V e = fn[first].cross(fn[second]);
+          if(e.norm() > 1e-9) cp.direction = e.normalized();
+        }
       }
     }
     const double len = cp.normal.norm();

@@ -4,6 +4,7 @@
 #ifndef CGAL_MLS_PROJECTION_PROJECT_POINTS_H
 #define CGAL_MLS_PROJECTION_PROJECT_POINTS_H
 
+#include <CGAL/Dimension.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>

@@ -28,9 +28,12 @@ struct Neighborhood {
   void gather(const Samples& samples, const Vec<D>& c, double r) {
     centre = c;
     radius = r;
-    samples.in_ball(c, r, indices);
-    points.resize(indices.size());
-    for(std::size_t i = 0; i < indices.size(); ++i) points[i] = samples.local_point(indices[i]);
+    indices.clear();
+    points.clear();
+    samples.for_each_in_ball(c, r, [&](std::size_t i, const Vec<D>& p) {
+      indices.push_back(i);
+      points.push_back(p);
+    });
   }
 
   bool covers(const Vec<D>& q, double support) const { return (q - centre).norm() + support <= radius * (1 + 1e-12); }

@@ -13,6 +13,8 @@
 #include <CGAL/MLS_projection/internal/Dimension.h>
 #include <CGAL/MLS_projection/internal/weighted_pca.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -37,31 +39,47 @@ struct Plane_split {
   bool valid = false;
 };
 
-/// k-hyperplanes from the initial labels; returns the split and its energy.
+/// k-hyperplanes from the initial labels; returns the split and its energy. Each round fits
+/// every hyperplane by the weighted PCA of its points (their moments summed in one pass), then
+/// assigns every point to its nearest hyperplane.
 template <int D, int K>
 Plane_split<D, K> refine_split(const std::vector<Vec<D>>& p, const std::vector<double>& w, std::vector<int> label,
                                std::size_t minimum_per_plane) {
   Plane_split<D, K> split;
-  std::vector<Vec<D>> group;
-  std::vector<double> gw;
   for(int round = 0; round < 10; ++round) {
+    std::array<double, K> W{};
+    std::array<std::size_t, K> count{};
+    std::array<Vec<D>, K> sum;
+    std::array<Mat<D>, K> second;
     for(int k = 0; k < K; ++k) {
-      group.clear();
-      gw.clear();
-      for(std::size_t i = 0; i < p.size(); ++i)
-        if(label[i] == k && w[i] > 0) {
-          group.push_back(p[i]);
-          gw.push_back(w[i]);
-        }
-      if(group.size() < minimum_per_plane) return split;
-      const Pca<D> pca = weighted_pca<D>(group, gw);
-      if(!pca.valid) return split;
-      split.planes[k].normal = pca.minor_axis();
-      split.planes[k].offset = pca.minor_axis().dot(pca.centroid);
-      split.planes[k].centroid = pca.centroid;
+      sum[k].setZero();
+      second[k].setZero();
+    }
+    // moments about the first point, for accuracy far from the origin
+    const Vec<D> o = p.empty() ? Vec<D>::Zero() : p[0];
+    for(std::size_t i = 0; i < p.size(); ++i) {
+      if(!(w[i] > 0)) continue;
+      const int k = label[i];
+      const Vec<D> d = p[i] - o;
+      W[k] += w[i];
+      ++count[k];
+      sum[k] += w[i] * d;
+      second[k].noalias() += w[i] * d * d.transpose();
+    }
+    for(int k = 0; k < K; ++k) {
+      if(count[k] < minimum_per_plane || !(W[k] > 0)) return split;
+      const Vec<D> mean = sum[k] / W[k];
+      const Mat<D> cov = second[k] / W[k] - mean * mean.transpose();
+      Eigen::SelfAdjointEigenSolver<Mat<D>> solver;
+      solver.computeDirect(cov);
+      const Vec<D> normal = solver.eigenvectors().col(0);
+      if(!normal.allFinite()) return split;
+      split.planes[k].normal = normal;
+      split.planes[k].centroid = o + mean;
+      split.planes[k].offset = normal.dot(split.planes[k].centroid);
     }
     bool changed = false;
-    double E = 0, W = 0;
+    double E = 0, Wt = 0;
     for(std::size_t i = 0; i < p.size(); ++i) {
       int best = 0;
       double bd = std::abs(split.planes[0].distance(p[i]));
@@ -75,9 +93,9 @@ Plane_split<D, K> refine_split(const std::vector<Vec<D>>& p, const std::vector<d
       changed |= best != label[i];
       label[i] = best;
       E += w[i] * bd * bd;
-      W += w[i];
+      Wt += w[i];
     }
-    split.energy = W > 0 ? E / W : split.energy;
+    split.energy = Wt > 0 ? E / Wt : split.energy;
     if(!changed) break;
   }
   split.valid = std::isfinite(split.energy);
