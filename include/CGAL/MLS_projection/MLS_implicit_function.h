@@ -118,24 +118,13 @@ struct Local_fit_evaluator<Closest_point_projection<GeomTraits, Space, kind>> {
   Space space;
 };
 
-template <class GeomTraits, Operator_kind kind, class Smooth, class Sharp>
-struct Local_fit_evaluator<Mixed_projection<GeomTraits, 3, kind, Smooth, Sharp>> {
-  static_assert(Smooth::number_of_parameters != Sharp::number_of_parameters,
-                "the local fits of a mixed space are told apart by their number of coefficients");
-  static_assert(Smooth::number_of_parameters <= max_local_fit_parameters &&
-                  Sharp::number_of_parameters <= max_local_fit_parameters,
-                "too many parameters for a cached local fit");
-  explicit Local_fit_evaluator(const Mixed_projection<GeomTraits, 3, kind, Smooth, Sharp>& p)
-    : smooth(p.smooth_projection().function_space()), sharp(p.sharp_projection().function_space()) {}
-  static double unit(double h) { return h; }
-  static bool accepts(int count) { return count == Smooth::number_of_parameters || count == Sharp::number_of_parameters; }
-  Closest_point<3> closest_point(const double* c, int count, const Vec<3>& y) const {
-    if(count == Sharp::number_of_parameters)
-      return sharp.closest_point(Eigen::Map<const typename Sharp::Parameters>(c), y);
-    return smooth.closest_point(Eigen::Map<const typename Smooth::Parameters>(c), y);
-  }
-  Smooth smooth;
-  Sharp sharp;
+// The sharp fits of a mixed projection; its smooth fits are P_L's, told apart by their number of
+// coefficients (see `levin_quadratic_parameters`).
+template <class GeomTraits, Operator_kind kind, class Sharp>
+struct Local_fit_evaluator<Mixed_projection<GeomTraits, 3, kind, Sharp>>
+    : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection> {
+  explicit Local_fit_evaluator(const Mixed_projection<GeomTraits, 3, kind, Sharp>& p)
+    : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection>(p.sharp_projection()) {}
 };
 
 /// Wendland's \f$C^2\f$ function \f$(1-t)^4(4t+1)\f$ on \f$[0, 1]\f$, 0 beyond.

@@ -5,56 +5,66 @@
 #define CGAL_MLS_PROJECTION_MIXED_PROJECTION_H
 
 #include <CGAL/MLS_projection/Closest_point_projection.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Levin_projection.h>
+#include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <vector>
 
 namespace CGAL {
 namespace MLS {
 
 /// \ingroup PkgMLSProjectionOperators
-/// A closest-point projection over the union of a smooth and a sharp function space (the
-/// "mixed" space; beyond the paper, in the spirit of its enriched spaces): each query is
-/// projected with both, and the sharp fit is kept only when it explains the data clearly
-/// better than the smooth one,
-/// \f[ E_{\mathrm{sharp}} < \rho \, E_{\mathrm{smooth}}, \f]
-/// where \f$E\f$ is the energy of the final fit (weighted mean squared closest-point distance) and
-/// \f$\rho\f$ is the `sharp_preference` (default 0.5). The ratio is the complexity penalty: the
-/// wedge fan has more parameters than the quadratic (8 against 3 in 3D) and, on noisy smooth
-/// data, its extra freedom lowers the energy by a small factor only (it fits a fold into the
-/// noise), whereas at a crease the quadratic cannot follow the data and its energy is larger by
-/// orders of magnitude. So curved regions keep the quadratic's second-order accuracy and creases
-/// are reproduced by the fan. A fit that did not converge (its energy is that of the best
-/// point found, or of Levin's fall-back) competes all the same: an exact fan that exhausted its
-/// budget near zero energy must still win over a converged quadratic that cannot fit a crease.
+/// The projection that keeps smooth parts smooth and creases sharp (the "mixed" space; beyond
+/// the paper, in the spirit of its enriched spaces): Levin's \f$\mathcal{P}_L\f$ with the full
+/// quadratic projects every query, and the closest-point operator with a sharp space (the wedge
+/// fan) projects only the queries whose quadratic does not explain the data:
 ///
-/// The result is the result of the kept fit (its `coefficients` are those of its space: their
-/// number tells which); `iterations` adds both.
+/// 1. <b>Screening.</b> The fan is tried where \f$\mathcal{P}_L\f$ fails or its energy (weighted
+///    mean squared residual) exceeds the noise threshold
+///    \f[ \tau = \max\big((\rho h)^2,\; \kappa^2 E_{25}\big), \f]
+///    with \f$E_{25}\f$ the first quartile of the \f$\mathcal{P}_L\f$ energies of up to 512 input
+///    points spread over the input (the level of the noise on the smooth parts, which cover most
+///    of a scan), \f$\kappa^2 = 3\f$ (a quadratic fitted to noise of that level rarely
+///    exceeds three times its typical energy) and \f$\rho = 0.01\f$ (on noiseless data, a
+///    residual of a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts).
+/// 2. <b>Model selection.</b> Where the fan is tried, it is kept only when it explains the data
+///    clearly better than the quadratic, \f$E_{\mathrm{sharp}} < \sigma\, E_{\mathrm{smooth}}\f$,
+///    \f$\sigma\f$ = `sharp_preference` (default 0.5). The ratio is the complexity penalty: the
+///    fan has more parameters (8 against 6 in 3D) and, on noisy smooth data, its extra freedom
+///    lowers the energy by a small factor only, whereas at a crease the quadratic cannot follow
+///    the data and its energy is larger by orders of magnitude.
+///
+/// So the smooth parts cost one \f$\mathcal{P}_L\f$ (a few tens of microseconds) and keep its
+/// second-order accuracy, and creases and corners are reproduced by the fan. The result is the
+/// result of the fit kept (its `coefficients` are those of its space: their number tells which,
+/// 6 or 3 for the quadratic in 3D or 2D); `iterations` adds both.
 ///
 /// \tparam GeomTraits a CGAL kernel
 /// \tparam D the dimension, 2 or 3
 /// \tparam kind `Operator_kind::UNIFIED` or `Operator_kind::ENRICHED` (the sharp space is not a graph)
-/// \tparam SmoothSpace a model of `MLSFunctionSpace`, by default `Quadratic_function_space<D>`
 /// \tparam SharpSpace a model of `MLSFunctionSpace`, by default `Wedge_fan_function_space<D>`
 template <class GeomTraits, int D, Operator_kind kind = Operator_kind::UNIFIED,
-          class SmoothSpace = Quadratic_function_space<D>, class SharpSpace = Wedge_fan_function_space<D>>
+          class SharpSpace = Wedge_fan_function_space<D>>
 class Mixed_projection {
   static_assert(kind != Operator_kind::SINGLE_PHASE, "Mixed_projection: the sharp space is not a graph, use P_U or P_E");
-  static_assert(SmoothSpace::ambient_dimension == D && SharpSpace::ambient_dimension == D,
-                "Mixed_projection: both function spaces must have dimension D");
+  static_assert(SharpSpace::ambient_dimension == D, "Mixed_projection: the sharp space must have dimension D");
+  static_assert(SharpSpace::number_of_parameters != Polynomial_function_space<D>::number_of_parameters,
+                "the fits of the two spaces are told apart by their number of coefficients");
 
 public:
   /// The two operators combined, and the types of `Closest_point_projection`.
   /// @{
-  using Smooth_projection = Closest_point_projection<GeomTraits, SmoothSpace, kind>;
+  using Smooth_projection = Levin_projection<GeomTraits, Polynomial_function_space<D>>;
   using Sharp_projection = Closest_point_projection<GeomTraits, SharpSpace, kind>;
-  using FT = typename Smooth_projection::FT;
-  using Point = typename Smooth_projection::Point;
-  using Vector = typename Smooth_projection::Vector;
-  using Samples = typename Smooth_projection::Samples;
-  using Result = typename Smooth_projection::Result;
+  using FT = typename Sharp_projection::FT;
+  using Point = typename Sharp_projection::Point;
+  using Vector = typename Sharp_projection::Vector;
+  using Samples = typename Sharp_projection::Samples;
+  using Result = typename Sharp_projection::Result;
   /// @}
   /// The ambient dimension.
   static constexpr int dimension = D;
@@ -70,11 +80,12 @@ public:
                             double sharp_preference = default_sharp_preference)
     : Mixed_projection(std::make_shared<const Samples>(points, np), options, sharp_preference) {}
 
-  /// Shares an existing sample set (and its kd-tree) with other operators.
+  /// Shares an existing sample set (and its kd-tree) with other operators. Estimates the noise
+  /// threshold of the screening (up to 512 projections by \f$\mathcal{P}_L\f$).
   explicit Mixed_projection(std::shared_ptr<const Samples> samples, const Projection_options& options = Projection_options(),
                             double sharp_preference = default_sharp_preference)
     : smooth_(samples, options), sharp_(samples, with_bandwidth(options, smooth_.bandwidth())),
-      sharp_preference_(sharp_preference) {
+      sharp_preference_(sharp_preference), threshold_(noise_threshold(smooth_)) {
     CGAL_precondition(sharp_preference > 0 && sharp_preference <= 1);
   }
 
@@ -83,27 +94,30 @@ public:
     return (std::max)(Smooth_projection::minimum_points(), Sharp_projection::minimum_points());
   }
 
-  /// Projects `query` with both operators and keeps the sharp result when `prefers_sharp()`.
-  Result project(const Point& query) const { return choose(smooth_.project(query), sharp_.project(query)); }
+  /// Projects `query` by \f$\mathcal{P}_L\f$, and by the sharp operator where `needs_sharp()`.
+  Result project(const Point& query) const {
+    Result smooth = smooth_.project(query);
+    return needs_sharp(smooth) ? choose(std::move(smooth), sharp_.project(query)) : smooth;
+  }
 
-  /// The state of a sequence of warm-started projections: that of each operator.
+  /// The state of a sequence of warm-started projections: that of the sharp operator.
   struct Warm_start {
-    typename Smooth_projection::Warm_start smooth; ///< the smooth operator's
-    typename Sharp_projection::Warm_start sharp;   ///< the sharp operator's
-    /// Forgets the last fits.
-    void reset() {
-      smooth.reset();
-      sharp.reset();
-    }
+    typename Sharp_projection::Warm_start sharp; ///< the sharp operator's
+    /// Forgets the last fit.
+    void reset() { sharp.reset(); }
   };
 
-  /// The same with both operators warm-started (see `Closest_point_projection::project()`).
+  /// The same with the sharp operator warm-started (see `Closest_point_projection::project()`).
   Result project(const Point& query, Warm_start& warm) const {
-    return choose(smooth_.project(query, warm.smooth), sharp_.project(query, warm.sharp));
+    Result smooth = smooth_.project(query);
+    return needs_sharp(smooth) ? choose(std::move(smooth), sharp_.project(query, warm.sharp)) : smooth;
   }
 
   /// Same as `project()`.
   Result operator()(const Point& query) const { return project(query); }
+
+  /// Whether the sharp operator is tried after the smooth result `smooth` (the screening).
+  bool needs_sharp(const Result& smooth) const { return !smooth.is_success() || !(smooth.energy <= threshold_); }
 
   /// Whether the sharp fit `sharp` is kept against the smooth fit `smooth` of the same query.
   bool prefers_sharp(const Result& smooth, const Result& sharp) const {
@@ -112,12 +126,14 @@ public:
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
-  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the options, the shared
-  /// sample set, and the two operators.
+  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the noise threshold
+  /// \f$\tau\f$ of the screening (a squared length), the options, the shared sample set, and the
+  /// two operators.
   /// @{
   double bandwidth() const { return smooth_.bandwidth(); }
   double sharp_preference() const { return sharp_preference_; }
-  const Projection_options& options() const { return smooth_.options(); }
+  double screening_threshold() const { return threshold_; }
+  const Projection_options& options() const { return sharp_.options(); }
   const Samples& samples() const { return smooth_.samples(); }
   const std::shared_ptr<const Samples>& shared_samples() const { return smooth_.shared_samples(); }
   const Smooth_projection& smooth_projection() const { return smooth_; }
@@ -129,7 +145,7 @@ private:
   Result choose(Result smooth, Result sharp) const {
     Result& kept = prefers_sharp(smooth, sharp) ? sharp : smooth;
     kept.iterations = smooth.iterations + sharp.iterations;
-    return kept;
+    return std::move(kept);
   }
 
   static Projection_options with_bandwidth(Projection_options options, double h) {
@@ -137,9 +153,29 @@ private:
     return options;
   }
 
+  // max((rho h)^2, kappa^2 E_25) of the class documentation.
+  static double noise_threshold(const Smooth_projection& smooth) {
+    constexpr double rho = 0.01, kappa2 = 3.;
+    constexpr std::size_t probes = 512;
+    const auto& samples = smooth.samples();
+    const double h = smooth.bandwidth(), floor = (rho * h) * (rho * h);
+    if(samples.size() < Smooth_projection::minimum_points()) return floor;
+    std::vector<double> energies;
+    const std::size_t stride = (std::max<std::size_t>)(1, samples.size() / probes);
+    for(std::size_t i = 0; i < samples.size(); i += stride) {
+      const Result r = smooth.project(samples.to_world(samples.local_point(i)));
+      if(r.is_success() && std::isfinite(r.energy)) energies.push_back(r.energy);
+    }
+    if(energies.empty()) return floor;
+    const auto quartile = energies.begin() + std::ptrdiff_t(energies.size() / 4);
+    std::nth_element(energies.begin(), quartile, energies.end());
+    return (std::max)(floor, kappa2 * *quartile);
+  }
+
   Smooth_projection smooth_;
   Sharp_projection sharp_;
   double sharp_preference_;
+  double threshold_;
 };
 
 } // namespace MLS

@@ -31,8 +31,8 @@ namespace internal {
 template <class Projection> struct finds_creases : std::false_type {};
 template <class K, int N, Operator_kind kind>
 struct finds_creases<Closest_point_projection<K, Wedge_fan_function_space<3, N>, kind>> : std::true_type {};
-template <class K, Operator_kind kind, class Smooth, class Sharp>
-struct finds_creases<Mixed_projection<K, 3, kind, Smooth, Sharp>> : std::true_type {};
+template <class K, Operator_kind kind, class Sharp>
+struct finds_creases<Mixed_projection<K, 3, kind, Sharp>> : std::true_type {};
 
 // The number of coefficients of P_L's quadratic (Polynomial_function_space<3>): the local fits of
 // a screened operator are told apart by it, so the operator's spaces must not have as many.
