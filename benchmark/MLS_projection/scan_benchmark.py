@@ -1,0 +1,189 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 The CGAL MLS_projection authors.
+# SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+"""The projection benchmark on simulated scans of CAD parts: mls_project against PCL's
+MovingLeastSquares, whole processes, in the same run. Run through scripts/benchmark, which
+builds the programs; see benchmark/MLS_projection/README.md for what is measured and why.
+
+Each part (an OpenSCAD example exported as a mesh) is sampled with `scan_part` at every seed and
+noise level (points without normals). On each scan run, one after the other, several times:
+  PCL       pcl_mls, polynomial order 2, radius 4 average spacings, one thread
+  P_L       mls_project --operator levin --space quadratic --threads 1
+  default   mls_project with its defaults, --threads 1, and again with --threads 2
+  isolated  mls_project --no-warm-starts --threads 1 (the defaults otherwise) on a subset of the
+            points as --queries: each query alone, the mesher's and the library's case; its cost
+            per query is the time of that run minus that of the same run with one query (the
+            reading, the search structure and the noise estimate), over the number of queries
+The times are medians of the runs (wall clock of the whole process: reading, the search
+structure, projecting, writing); the errors are the distances of the output points to the
+part's mesh as fractions of its bounding-box diagonal (RMS and maximum).
+"""
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+PARTS = {  # name: (OpenSCAD file, definitions)
+    "example002": ("/usr/share/openscad/examples/Old/example002.scad", ["-D", "$fn=96"]),
+    "example006": ("/usr/share/openscad/examples/Old/example006.scad", []),
+}
+
+
+def run(cmd, quiet=True):
+    """Runs `cmd`; returns (seconds, peak resident KiB). Raises on failure."""
+    start = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE if quiet else None, stderr=subprocess.PIPE)
+    _, _, rusage = os.wait4(proc.pid, 0)
+    seconds = time.perf_counter() - start
+    out, err = proc.communicate()
+    if proc.returncode != 0:
+        raise RuntimeError("%s failed:\n%s" % (" ".join(cmd), err.decode(errors="replace")))
+    return seconds, rusage.ru_maxrss
+
+
+def output_of(cmd):
+    return subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+
+
+def median_time(cmd, runs):
+    times, memory = [], 0
+    for _ in range(runs):
+        t, m = run(cmd)
+        times.append(t)
+        memory = max(memory, m)
+    return statistics.median(times), memory
+
+
+def distances(tools, mesh, points):
+    fields = output_of([tools["scan_part"], "distance", mesh, points]).split()
+    values = dict(zip(fields[0::2], fields[1::2]))
+    return float(values["rms"]), float(values["max"])
+
+
+def export_part(name, work):
+    scad, definitions = PARTS[name]
+    mesh = os.path.join(work, name + ".off")
+    if not os.path.exists(mesh):
+        subprocess.run(["openscad", *definitions, "-o", mesh, scad], check=True, capture_output=True)
+    return mesh
+
+
+def subset(points, out, stride):
+    with open(points) as src, open(out, "w") as dst:
+        for i, line in enumerate(src):
+            if i % stride == 0:
+                dst.write(line)
+
+
+def measure_scan(tools, mesh, scan, n, args, log):
+    spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
+    radius = 4 * spacing
+    d = os.path.dirname(scan)
+    row = {}
+    cases = {
+        "PCL": [tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(radius), "1"],
+        "P_L": [tools["mls_project"], "--input", scan, "--output", os.path.join(d, "levin.xyz"),
+                "--operator", "levin", "--space", "quadratic", "--threads", "1", "--quiet"],
+        "default": [tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default.xyz"),
+                    "--threads", "1", "--quiet"],
+        "default2": [tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default2.xyz"),
+                     "--threads", "2", "--quiet"],
+    }
+    stride = max(1, n // args.isolated)
+    queries = os.path.join(d, "queries.xyz")
+    subset(scan, queries, stride)
+    one_query = os.path.join(d, "one_query.xyz")
+    subset(scan, one_query, n)
+    cases["isolated"] = [tools["mls_project"], "--input", scan, "--queries", queries, "--output",
+                         os.path.join(d, "isolated.xyz"), "--no-warm-starts", "--threads", "1", "--quiet"]
+    cases["setup"] = cases["isolated"][:4] + [one_query] + cases["isolated"][5:]
+    for name, cmd in cases.items():
+        row[name], row[name + "_memory"] = median_time(cmd, args.runs)
+        log("    %-9s %.3f s" % (name, row[name]))
+    row["queries"] = (n + stride - 1) // stride
+    row["per_query"] = max(0., row["isolated"] - row["setup"]) / row["queries"]
+    for name, out in (("PCL", "pcl.xyz"), ("P_L", "levin.xyz"), ("default", "default.xyz")):
+        row[name + "_rms"], row[name + "_max"] = distances(tools, mesh, os.path.join(d, out))
+    return row
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--bin", required=True, help="the directory of mls_project, scan_part and pcl_mls")
+    parser.add_argument("--parts", default="example002,example006")
+    parser.add_argument("--points", type=int, default=50000)
+    parser.add_argument("--noise", default="0,0.002", help="noise levels, fractions of the diagonal")
+    parser.add_argument("--seeds", default="1,2")
+    parser.add_argument("--runs", type=int, default=3, help="runs per measurement (the median is kept)")
+    parser.add_argument("--isolated", type=int, default=2000, help="queries of the isolated case")
+    parser.add_argument("--scale", type=int, default=0, help="also project this many points (e.g. 1000000)")
+    parser.add_argument("--work", default=None, help="directory of the scans (default: a temporary one)")
+    args = parser.parse_args()
+
+    tools = {t: os.path.join(args.bin, t) for t in ("mls_project", "scan_part", "pcl_mls")}
+    for t, path in tools.items():
+        if not os.access(path, os.X_OK):
+            sys.exit("scan_benchmark: %s not found in %s" % (t, args.bin))
+    work = args.work or tempfile.mkdtemp(prefix="mls_scans_")
+    os.makedirs(work, exist_ok=True)
+    log = lambda s: print(s, file=sys.stderr, flush=True)
+
+    rows = []
+    for part in args.parts.split(","):
+        mesh = export_part(part, work)
+        for noise in args.noise.split(","):
+            for seed in args.seeds.split(","):
+                d = os.path.join(work, "%s_n%s_s%s" % (part, noise, seed))
+                os.makedirs(d, exist_ok=True)
+                scan = os.path.join(d, "scan.xyz")
+                subprocess.run([tools["scan_part"], "sample", mesh, str(args.points), noise, seed, scan], check=True)
+                log("%s, noise %s, seed %s" % (part, noise, seed))
+                row = measure_scan(tools, mesh, scan, args.points, args, log)
+                row.update(part=part, noise=float(noise), seed=seed)
+                rows.append(row)
+
+    print("## Projection on scans of CAD parts (%d points, medians of %d runs, one thread unless said)\n"
+          % (args.points, args.runs))
+    print("| part | noise | seed | PCL s | P_L / PCL | default / PCL | 2 threads speed-up | isolated default "
+          "per query / PCL's per point | RMS PCL | RMS P_L | RMS default | max PCL | max P_L | max default |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        per_query = r["per_query"] / (r["PCL"] / args.points)
+        print("| %s | %g | %s | %.2f | %.2f | %.2f | %.2f | %.1f | %.2e | %.2e | %.2e | %.2e | %.2e | %.2e |" % (
+            r["part"], r["noise"], r["seed"], r["PCL"], r["P_L"] / r["PCL"], r["default"] / r["PCL"],
+            r["default"] / r["default2"], per_query, r["PCL_rms"], r["P_L_rms"], r["default_rms"], r["PCL_max"],
+            r["P_L_max"], r["default_max"]))
+    ratio = lambda key: statistics.median(r[key] / r["PCL"] for r in rows)
+    print("\nMedians over the scans: P_L / PCL %.2f, default / PCL %.2f, 2 threads speed-up %.2f, "
+          "isolated default per query / PCL's per point %.1f" % (
+              ratio("P_L"), ratio("default"), statistics.median(r["default"] / r["default2"] for r in rows),
+              statistics.median(r["per_query"] / (r["PCL"] / args.points) for r in rows)))
+
+    if args.scale:
+        part = args.parts.split(",")[0]
+        mesh = export_part(part, work)
+        d = os.path.join(work, "%s_scale" % part)
+        os.makedirs(d, exist_ok=True)
+        scan = os.path.join(d, "scan.xyz")
+        subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), "0.002", "1", scan], check=True)
+        spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
+        log("%s, %d points, noise 0.002" % (part, args.scale))
+        pcl, pcl_memory = run([tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(4 * spacing), "1"])
+        ours, memory = run([tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default.xyz"),
+                            "--threads", "1", "--quiet"])
+        small = statistics.median(r["default"] for r in rows if r["part"] == part and r["noise"] == 0.002)
+        print("\n## Scale: %d points of %s at noise 0.002, one thread, one run\n" % (args.scale, part))
+        print("| | PCL | default |\n|---|---|---|")
+        print("| time (s) | %.1f | %.1f |" % (pcl, ours))
+        print("| peak memory per input point (bytes) | %.0f | %.0f |" % (
+            pcl_memory * 1024. / args.scale, memory * 1024. / args.scale))
+        print("\ndefault / PCL %.2f; default at %d points / at %d points %.1f (linear: %.1f)" % (
+            ours / pcl, args.scale, args.points, ours / small, args.scale / args.points))
+
+
+if __name__ == "__main__":
+    main()

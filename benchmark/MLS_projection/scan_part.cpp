@@ -1,0 +1,161 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Simulated scans of CAD parts, and their distances to the part, for the benchmark.
+//
+//   scan_part sample MESH.off N NOISE SEED OUT.xyz
+//       N points drawn uniformly by area on the triangle mesh, plus isotropic Gaussian noise of
+//       standard deviation NOISE times the diagonal of the mesh's bounding box on each
+//       coordinate, written as "x y z" lines (no normals, as a scanner delivers them).
+//       Deterministic: the same arguments give the same points on every machine.
+//   scan_part distance MESH.off POINTS
+//       The distances of the points of POINTS (.xyz lines, or the vertices of an .off mesh) to
+//       the mesh, as fractions of the diagonal: one line "rms R max M p99 P n N".
+//   scan_part spacing POINTS
+//       The average spacing of the points (CGAL's compute_average_spacing, 6 neighbours).
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/bounding_box.h>
+#include <CGAL/compute_average_spacing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+// Uniform and normal variates from mt19937_64's specified output (the standard distributions
+// are implementation-defined).
+class Random {
+public:
+  explicit Random(std::uint64_t seed) : engine_(seed) {}
+  double uniform() { return double(engine_() >> 11) * (1.0 / 9007199254740992.0); }
+  double normal() {
+    double u = 0;
+    while(u <= 0) u = uniform();
+    return std::sqrt(-2. * std::log(u)) * std::cos(6.283185307179586 * uniform());
+  }
+
+private:
+  std::mt19937_64 engine_;
+};
+
+Mesh read_mesh(const std::string& file) {
+  Mesh mesh;
+  if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(file, mesh) || mesh.is_empty())
+    throw std::runtime_error("cannot read the mesh " + file);
+  CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  return mesh;
+}
+
+double diagonal(const Mesh& mesh) {
+  const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
+  return std::sqrt(CGAL::squared_distance(box.min(), box.max()));
+}
+
+std::vector<Point> read_points(const std::string& file) {
+  std::vector<Point> points;
+  std::ifstream in(file);
+  if(!in) throw std::runtime_error("cannot read " + file);
+  std::string line;
+  if(file.size() > 4 && file.substr(file.size() - 4) == ".off") {
+    Mesh mesh;
+    if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(file, mesh)) throw std::runtime_error("cannot read " + file);
+    for(const auto v : mesh.vertices()) points.push_back(mesh.point(v));
+    return points;
+  }
+  while(std::getline(in, line)) {
+    std::istringstream s(line);
+    double x, y, z;
+    if(s >> x >> y >> z) points.emplace_back(x, y, z);
+  }
+  return points;
+}
+
+int sample(const std::string& file, std::size_t n, double noise, std::uint64_t seed, const std::string& out_file) {
+  const Mesh mesh = read_mesh(file);
+  const double sigma = noise * diagonal(mesh);
+  std::vector<double> area;
+  std::vector<std::array<Point, 3>> triangles;
+  double total = 0;
+  for(const auto f : mesh.faces()) {
+    const auto h = mesh.halfedge(f);
+    const std::array<Point, 3> t = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                    mesh.point(mesh.target(mesh.next(h)))};
+    total += std::sqrt(CGAL::squared_area(t[0], t[1], t[2]));
+    area.push_back(total);
+    triangles.push_back(t);
+  }
+  Random rng(seed);
+  std::ofstream out(out_file);
+  out.precision(17);
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = std::size_t(std::lower_bound(area.begin(), area.end(), rng.uniform() * total) - area.begin());
+    const auto& t = triangles[(std::min)(k, triangles.size() - 1)];
+    double u = rng.uniform(), v = rng.uniform();
+    if(u + v > 1) {
+      u = 1 - u;
+      v = 1 - v;
+    }
+    const Point p = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+    const double dx = sigma * rng.normal(), dy = sigma * rng.normal(), dz = sigma * rng.normal();
+    out << p.x() + dx << ' ' << p.y() + dy << ' ' << p.z() + dz << '\n';
+  }
+  return out ? 0 : 1;
+}
+
+int distance(const std::string& mesh_file, const std::string& points_file) {
+  const Mesh mesh = read_mesh(mesh_file);
+  const double diag = diagonal(mesh);
+  Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+  tree.accelerate_distance_queries();
+  std::vector<double> d;
+  for(const Point& p : read_points(points_file)) d.push_back(std::sqrt(tree.squared_distance(p)) / diag);
+  if(d.empty()) throw std::runtime_error("no point in " + points_file);
+  double sum = 0;
+  for(double x : d) sum += x * x;
+  std::sort(d.begin(), d.end());
+  std::printf("rms %.4g max %.4g p99 %.4g n %zu\n", std::sqrt(sum / double(d.size())), d.back(), d[d.size() * 99 / 100],
+              d.size());
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if(mode == "sample" && argc == 7)
+      return sample(argv[2], std::stoul(argv[3]), std::stod(argv[4]), std::stoull(argv[5]), argv[6]);
+    if(mode == "distance" && argc == 4) return distance(argv[2], argv[3]);
+    if(mode == "spacing" && argc == 3) {
+      const auto points = read_points(argv[2]);
+      std::printf("%.6g\n", CGAL::compute_average_spacing<CGAL::Sequential_tag>(points, 6));
+      return 0;
+    }
+    std::cerr << "usage: scan_part sample MESH.off N NOISE SEED OUT.xyz | distance MESH.off POINTS | spacing POINTS\n";
+    return 2;
+  } catch(const std::exception& e) {
+    std::cerr << "scan_part: " << e.what() << "\n";
+    return 1;
+  }
+}
