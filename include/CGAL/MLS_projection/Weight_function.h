@@ -38,12 +38,12 @@ public:
   /// The support radius of a `POLYNOMIAL` weight, in units of \f$h\f$.
   static constexpr double polynomial_support = 2.449489742783178; // sqrt(6)
 
-  /// \pre `h > 0` and `support_factor > 0` (ignored by `POLYNOMIAL`, whose support is
-  /// `polynomial_support` times `h`)
+  /// \pre `h > 0`, and `support_factor > 0` unless `kind` is `POLYNOMIAL` (whose support is
+  /// `polynomial_support` times `h`: `support_factor` is ignored)
   Weight_function(Weight_kind kind, double h, double support_factor)
     : kind_(kind), h_(h), inv_h2_(1. / (h * h)),
       radius_((kind == Weight_kind::POLYNOMIAL ? polynomial_support : support_factor) * h), inv_r_(1. / radius_) {
-    CGAL_precondition(h > 0 && support_factor > 0);
+    CGAL_precondition(h > 0 && (kind == Weight_kind::POLYNOMIAL || support_factor > 0));
   }
 
   /// The kind of weight function.
