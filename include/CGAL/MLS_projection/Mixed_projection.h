@@ -28,8 +28,8 @@ namespace MLS {
 ///    \f[ \tau = \max\big((\rho h)^2,\; \kappa^2 E_{25}\big), \f]
 ///    with \f$E_{25}\f$ the first quartile of the \f$\mathcal{P}_L\f$ energies of up to 512 input
 ///    points spread over the input (the level of the noise on the smooth parts, which cover most
-///    of a scan), \f$\kappa^2 = 3\f$ (a quadratic fitted to noise of that level rarely
-///    exceeds three times its typical energy) and \f$\rho = 0.01\f$ (on noiseless data, a
+///    of a scan), \f$\kappa^2 = 3\f$ (a margin over the spread of the energies of smooth
+///    parts, chosen on the benchmark's scans) and \f$\rho = 0.01\f$ (on noiseless data, a
 ///    residual of a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts).
 /// 2. <b>Model selection.</b> Where the fan is tried, it is kept only when it explains the data
 ///    clearly better than the quadratic, \f$E_{\mathrm{sharp}} < \sigma\, E_{\mathrm{smooth}}\f$,
