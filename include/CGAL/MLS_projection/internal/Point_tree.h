@@ -79,11 +79,21 @@ public:
     const auto worse = [](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b) { return a < b; };
     struct Entry {
       std::uint32_t node;
-      double bound; // squared distance from c to the node's side of its parent's plane
+      double bound; // squared distance from c to the node's box
+    };
+    // the boxes bound the search from far away too (the meshers evaluate points far outside the
+    // data), where the distance to a splitting plane alone prunes little
+    const auto box_distance = [&c](const Node& n) {
+      double d = 0;
+      for(int j = 0; j < D; ++j) {
+        const double v = (std::max)({n.lo[j] - c[j], 0., c[j] - n.hi[j]});
+        d += v * v;
+      }
+      return d;
     };
     Entry stack[128];
     int top = 0;
-    stack[top++] = {0, 0.};
+    stack[top++] = {0, box_distance(nodes_[0])};
     while(top > 0) {
       const Entry e = stack[--top];
       if(out.size() == k && e.bound > out.front().first) continue;
@@ -102,15 +112,14 @@ public:
         }
         continue;
       }
-      const double s = c[node.dimension] - node.split;
-      const double far_bound = (std::max)(e.bound, s * s);
+      const double left = box_distance(nodes_[node.left]), right = box_distance(nodes_[node.right]);
       // the far side first on the stack, so that the near side is searched first
-      if(s <= 0) {
-        stack[top++] = {node.right, far_bound};
-        stack[top++] = {node.left, e.bound};
+      if(left <= right) {
+        stack[top++] = {node.right, right};
+        stack[top++] = {node.left, left};
       } else {
-        stack[top++] = {node.left, far_bound};
-        stack[top++] = {node.right, e.bound};
+        stack[top++] = {node.left, left};
+        stack[top++] = {node.right, right};
       }
     }
     std::sort_heap(out.begin(), out.end(), worse);
@@ -120,6 +129,7 @@ private:
   struct Node {
     int dimension = -1; // the splitting axis; -1 for a leaf
     double split = 0;
+    Vec<D> lo, hi; // the bounding box of the node's points
     std::uint32_t begin = 0, end = 0;  // a leaf's points
     std::uint32_t left = 0, right = 0; // children (points at most, at least `split` on the axis)
   };
@@ -133,12 +143,14 @@ private:
     nodes_.emplace_back();
     nodes_[id].begin = begin;
     nodes_[id].end = end;
-    if(end - begin <= leaf_size) return id;
     Vec<D> lo = p[order[begin]], hi = lo;
     for(std::uint32_t i = begin + 1; i < end; ++i) {
       lo = lo.cwiseMin(p[order[i]]);
       hi = hi.cwiseMax(p[order[i]]);
     }
+    nodes_[id].lo = lo;
+    nodes_[id].hi = hi;
+    if(end - begin <= leaf_size) return id;
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
     if(!(hi[axis] > lo[axis])) return id; // all points equal: one leaf
