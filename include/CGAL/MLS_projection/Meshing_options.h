@@ -98,9 +98,10 @@ struct Meshing_report {
   /// Points projected by the feature detection (helper points and polyline vertices).
   std::size_t feature_queries = 0;
   /// Mesh_3 failed with the feature polylines (a CGAL error, e.g. on polylines too close to each
-  /// other that `detect_sharp_features()` did not separate), or did not finish within
-  /// `Meshing_options::feature_evaluation_budget` (then `feature_budget_exceeded` is set too): the
-  /// mesh was made without them, so no feature is protected.
+  /// other that `detect_sharp_features()` did not separate), or did not finish with them (it
+  /// exceeded `Meshing_options::feature_evaluation_budget` or stalled: then
+  /// `feature_budget_exceeded` is set too): the mesh was made without them, so no feature is
+  /// protected.
   /// @{
   bool features_dropped = false, feature_budget_exceeded = false;
   /// @}
@@ -170,15 +171,16 @@ struct Meshing_options {
   /// \f$10^6\f$ (normal runs use 1 to 2 times the expected number).
   std::size_t max_evaluations = 0;
   /// Mesh_3 with the feature polylines is stopped after this many times the expected number of
-  /// evaluations (see `max_evaluations`; normal runs use 1 to 2 times), and the surface is meshed
-  /// again without them (`Meshing_report::feature_budget_exceeded`): its refinement around a
-  /// protected polyline can go on without end (a sampled solid with a hole across a crease).
-  /// 0: no such budget.
-  double feature_evaluation_budget = 10;
+  /// evaluations (see `max_evaluations`; normal runs use less than once), or as soon as it stalls
+  /// (no new evaluation of the function for 5 seconds and a quarter of the meshing time: its
+  /// manifold refinement next to a protected polyline can loop without end), and the surface is
+  /// meshed again without them (`Meshing_report::feature_budget_exceeded`). 0: no budget (the
+  /// stall is still detected).
+  double feature_evaluation_budget = 4;
   /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the
-  /// time limit"), after this many seconds of meshing; 0 (default): no limit. Mesh_3's refinement
-  /// can also loop without evaluating the function (in its manifold facet refinement, see the
-  /// user manual), which `max_evaluations` does not see.
+  /// time limit"), after this many seconds of meshing; 0 (default): no limit. (Mesh_3 is also
+  /// stopped when it stalls, see `feature_evaluation_budget`: without polylines the
+  /// reconstruction then fails, "the mesher stalled".)
   double max_meshing_seconds = 0;
   /// The options of the implicit function (seeds, blending, normals).
   Implicit_function_options implicit_function;

@@ -228,9 +228,11 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     // solid), which would grow spurious surface there.
     const Point_3 centre = in.bounding_sphere.center();
     const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
+    // Beyond the sphere, the value is the distance to it, without evaluating f there (the points
+    // far out are many, and far from every seed).
     in.function = [function, centre, radius](const Point_3& p) {
       const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
-      return (std::max)(CGAL::to_double(function(p)), outside);
+      return outside > 0 ? outside : (std::max)(CGAL::to_double(function(p)), outside);
     };
     in.inner_point = function.get_inner_point();
     // the sphere check on the function itself (the clamped one is 0 on the sphere)

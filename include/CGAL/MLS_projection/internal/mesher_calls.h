@@ -28,12 +28,15 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/tags.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -78,7 +81,7 @@ struct Mesher_input {
   std::size_t max_evaluations = 0;
   /// Mesh_3 with polylines: the budget of evaluations, in units of `expected_evaluations`, after
   /// which it meshes again without them (0: none).
-  double feature_budget = 10;
+  double feature_budget = 4;
   /// The mesher is stopped after this many seconds (0: no limit): the run then fails.
   double max_seconds = 0;
 };
@@ -99,6 +102,8 @@ struct Meshing_cancelled {};
 
 // The state shared by the copies of a monitored function (meshers copy their function).
 struct Evaluation_monitor {
+  // tells apart the runs in the cache of recent values (a monitor may reuse another's address)
+  const std::uint64_t run = next_run();
   std::atomic<std::size_t> count{0};
   std::atomic<bool> stop{false};
   std::thread::id caller = std::this_thread::get_id();
@@ -107,13 +112,42 @@ struct Evaluation_monitor {
   std::size_t limit = 0;             // 0: none
   std::atomic<bool> limit_hit{false};
   std::atomic<bool> time_hit{false};
+  std::atomic<bool> stall_hit{false};
   bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
+
+  static std::uint64_t next_run() {
+    static std::atomic<std::uint64_t> runs{0};
+    return ++runs;
+  }
+};
+
+// The values of the function at the last points this thread evaluated in a run: Mesh_3 evaluates
+// the ends of a segment to test it for an intersection, then again to construct it.
+struct Recent_values {
+  struct Entry {
+    std::uint64_t run = 0;
+    double x = 0, y = 0, z = 0, value = 0;
+  };
+  std::array<Entry, 4> entries;
+  unsigned next = 0;
+
+  const double* find(std::uint64_t run, double x, double y, double z) const {
+    for(const Entry& e : entries)
+      if(e.run == run && e.x == x && e.y == y && e.z == z) return &e.value;
+    return nullptr;
+  }
+  void add(std::uint64_t run, double x, double y, double z, double value) {
+    entries[next] = Entry{run, x, y, z, value};
+    next = (next + 1) % entries.size();
+  }
 };
 
 // The report of a mesher stopped by the callback, the evaluation limit or the time limit.
 inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& report) {
   if(monitor.limit_hit.load()) {
     report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
+  } else if(monitor.stall_hit.load()) {
+    report.message = "the mesher stalled (Mesh_3 refined without progress)";
   } else if(monitor.time_hit.load()) {
     report.message = "the mesher did not finish within the time limit (Meshing_options::max_meshing_seconds)";
   } else {
@@ -123,18 +157,42 @@ inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& 
   return report;
 }
 
-// Sets the monitor's stop flag after `seconds` (none when `seconds` is not positive), unless
-// destroyed before: the meshers poll the flag in their loops (Mesh_3's refinement may run long
-// without evaluating the function, e.g. in its manifold facet refinement).
+// Sets the monitor's stop flag after `seconds` of meshing (no limit when `seconds` is not
+// positive), or when the mesher has stalled (with `stall_detection`): no new evaluation of the
+// function for 5 seconds and a quarter of the time spent, unless destroyed before. The meshers
+// poll the flag in their loops. Mesh_3's manifold refinement next to protected polylines can loop
+// without end on a point hidden by a protecting ball ("the facet is not in the conflict zone"),
+// re-examining the same facets without evaluating anything new; its other stages evaluate the
+// function all along.
 class Meshing_watchdog {
 public:
-  Meshing_watchdog(Evaluation_monitor& monitor, double seconds) {
-    if(!(seconds > 0) || !std::isfinite(seconds)) return;
-    thread_ = std::thread([this, &monitor, seconds] {
+  Meshing_watchdog(Evaluation_monitor& monitor, double seconds, bool stall_detection) {
+    const bool timed = seconds > 0 && std::isfinite(seconds);
+    if(!timed && !stall_detection) return;
+    thread_ = std::thread([this, &monitor, seconds, timed, stall_detection] {
+      using Clock = std::chrono::steady_clock;
+      const auto start = Clock::now();
+      auto last_change = start;
+      std::size_t last_count = monitor.count.load();
       std::unique_lock<std::mutex> lock(mutex_);
-      if(!done_cv_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return done_; })) {
-        monitor.time_hit.store(true);
+      while(!done_cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return done_; })) {
+        const auto now = Clock::now();
+        const double elapsed = std::chrono::duration<double>(now - start).count();
+        const std::size_t count = monitor.count.load();
+        if(count != last_count) {
+          last_count = count;
+          last_change = now;
+        }
+        const double idle = std::chrono::duration<double>(now - last_change).count();
+        if(timed && elapsed > seconds) {
+          monitor.time_hit.store(true);
+        } else if(stall_detection && idle > (std::max)(5., 0.25 * elapsed)) {
+          monitor.stall_hit.store(true);
+        } else {
+          continue;
+        }
         monitor.stop.store(true, std::memory_order_release);
+        return;
       }
     });
   }
@@ -163,7 +221,11 @@ struct Monitored_function {
   const std::function<double(const typename GeomTraits::Point_3&)>* function;
   Evaluation_monitor* monitor;
 
-  FT operator()(const Point& p) const {
+  FT operator()(const Point& p) const { return FT(value(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()))); }
+
+  double value(double x, double y, double z) const {
+    thread_local Recent_values recent;
+    if(const double* v = recent.find(monitor->run, x, y, z)) return *v;
     const std::size_t c = monitor->count.fetch_add(1, std::memory_order_relaxed) + 1;
     if(c == monitor->limit + 1 && monitor->limit > 0) { // exactly one call sees it
       monitor->limit_hit.store(true, std::memory_order_relaxed);
@@ -174,14 +236,18 @@ struct Monitored_function {
         monitor->stop.store(true, std::memory_order_release);
     }
     if(monitor->throw_on_stop && monitor->stop.load(std::memory_order_relaxed)) throw Meshing_cancelled();
-    const double v = (*function)(typename GeomTraits::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
-    return FT(std::isfinite(v) ? v : 1.); // a NaN would break the bisections: outside
+    const double v = (*function)(typename GeomTraits::Point_3(x, y, z));
+    const double out = std::isfinite(v) ? v : 1.; // a NaN would break the root finding: outside
+    recent.add(monitor->run, x, y, z, out);
+    return out;
   }
 };
 
 // Mesh_3's domain: the implicit function's labeled domain with polyline features, whose
 // initial points are the intersections of the probe segments (CGAL 5.5's make_mesh_3 takes no
-// initial points; its own random segments can miss small components or thin objects).
+// initial points; its own random segments can miss small components or thin objects), and whose
+// intersections of segments with the surface are found from the function's values (the labeled
+// domain bisects on the signs alone: some 15 evaluations per intersection, against about 5).
 template <class GeomTraits>
 class Probed_implicit_domain : public Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>> {
   using Base = Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>>;
@@ -189,9 +255,21 @@ class Probed_implicit_domain : public Mesh_domain_with_polyline_features_3<Label
 public:
   using Point_3 = typename Base::Point_3;
   using Segment_3 = typename GeomTraits::Segment_3;
+  using Intersection = typename Base::Intersection;
 
-  Probed_implicit_domain(const Labeled_mesh_domain_3<GeomTraits>& domain, std::vector<std::pair<Point_3, Point_3>> probes)
-    : Base(domain), probes_(std::move(probes)) {}
+  /// `function`: the values whose signs `domain` labels; `error`: the largest distance, along a
+  /// segment, from an intersection to the surface.
+  Probed_implicit_domain(const Labeled_mesh_domain_3<GeomTraits>& domain, const Monitored_function<GeomTraits>& function,
+                         double error, std::vector<std::pair<Point_3, Point_3>> probes)
+    : Base(domain), function_(function), error_(error), probes_(std::move(probes)) {}
+
+  struct Construct_intersection {
+    const Probed_implicit_domain* domain;
+    Intersection operator()(const Segment_3& s) const { return domain->intersection(s.source(), s.target()); }
+    template <class Query> // rays and lines: the labeled domain's bisection (rare: the convex hull's)
+    Intersection operator()(const Query& q) const { return domain->Base::construct_intersection_object()(q); }
+  };
+  Construct_intersection construct_intersection_object() const { return Construct_intersection{this}; }
 
   struct Construct_initial_points {
     const Probed_implicit_domain* domain;
@@ -213,6 +291,42 @@ public:
   Construct_initial_points construct_initial_points_object() const { return Construct_initial_points{this}; }
 
 private:
+  // A point of [a, b] where f changes sign, within `error_` of the crossing along the segment
+  // (Illinois' regula falsi: the function is close to a signed distance, so few steps are needed);
+  // no intersection when the labels of a and b agree.
+  Intersection intersection(const Point_3& a, const Point_3& b) const {
+    const auto patch = this->do_intersect_surface_object()(Segment_3(a, b)); // the ends' values, cached
+    if(!patch) return Intersection();
+    const double ax = CGAL::to_double(a.x()), ay = CGAL::to_double(a.y()), az = CGAL::to_double(a.z());
+    const double dx = CGAL::to_double(b.x()) - ax, dy = CGAL::to_double(b.y()) - ay, dz = CGAL::to_double(b.z()) - az;
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const auto f = [&](double t) { return function_.value(ax + t * dx, ay + t * dy, az + t * dz); };
+    double t0 = 0, t1 = 1, f0 = f(0.), f1 = f(1.);
+    double t = 0.5;
+    int side = 0;
+    for(int it = 0; it < 64 && (t1 - t0) * length > error_; ++it) {
+      t = (f1 - f0) != 0 ? (t0 * f1 - t1 * f0) / (f1 - f0) : 0.5 * (t0 + t1);
+      if(!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
+      const double ft = f(t);
+      if(std::abs(ft) <= error_) break;
+      if((ft < 0) == (f0 < 0)) {
+        t0 = t;
+        f0 = ft;
+        if(side == -1) f1 *= 0.5; // Illinois: halve the end that stays
+        side = -1;
+      } else {
+        t1 = t;
+        f1 = ft;
+        if(side == 1) f0 *= 0.5;
+        side = 1;
+      }
+      t = 0.5 * (t0 + t1);
+    }
+    return Intersection(Point_3(ax + t * dx, ay + t * dy, az + t * dz), this->index_from_surface_patch_index(*patch), 2);
+  }
+
+  Monitored_function<GeomTraits> function_;
+  double error_;
   std::vector<std::pair<Point_3, Point_3>> probes_;
 };
 
@@ -269,12 +383,20 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
-  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds);
+  const auto start = std::chrono::steady_clock::now();
+  // a watchdog per run of Mesh_3, under the time limit of the whole meshing
+  const auto watch = [&] {
+    double seconds = 0;
+    if(in.max_seconds > 0)
+      seconds = (std::max)(1e-3, in.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return std::make_unique<Meshing_watchdog>(monitor, seconds, true);
+  };
   const Monitored_function<GeomTraits> function{&in.function, &monitor};
 
+  const double error = in.relative_error_bound * std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
   Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
                                                      params::relative_error_bound = in.relative_error_bound),
-                in.probes);
+                function, error, in.probes);
   // the domain with the polylines, when there are any (`domain` stays without: the fall-back)
   std::optional<Domain> featured;
   std::vector<std::vector<Point_3>> polylines;
@@ -291,14 +413,14 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   C3t3 c3t3;
   const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
   if(has_features) {
-    // The run with polylines gets a budget of `feature_budget` times the expected evaluations
-    // (normal runs use 1 to 2 times): Mesh_3's refinement around a protected polyline can go on
-    // without end (seen on a sampled solid with a hole across a crease: 9 million evaluations in
-    // 300 s; without the polylines, 1.8 s). Beyond it, the surface is meshed again without them.
+    // The run with polylines gets a budget of `feature_budget` times the expected evaluations,
+    // and stops when it stalls (see `Meshing_watchdog`): Mesh_3's refinement around a protected
+    // polyline can go on without end. Then the surface is meshed again without them.
     const std::size_t user_limit = monitor.limit;
     const std::size_t budget = std::size_t(in.feature_budget * monitor.expected);
     const bool budgeted = in.feature_budget > 0 && (user_limit == 0 || budget < user_limit);
     if(budgeted) monitor.limit = budget;
+    auto watchdog = watch();
     try {
       c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
                                params::manifold(), options);
@@ -306,21 +428,24 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
       report.features_dropped = true;
       has_features = false;
     }
-    if(budgeted && monitor.limit_hit.load() && !monitor.time_hit.load()) {
+    watchdog.reset();
+    if(((budgeted && monitor.limit_hit.load()) || monitor.stall_hit.load()) && !monitor.time_hit.load()) {
       report.features_dropped = true;
       report.feature_budget_exceeded = true;
       has_features = false;
       c3t3 = C3t3();
       monitor.count.store(0);
       monitor.limit_hit.store(false);
+      monitor.stall_hit.store(false);
       monitor.stop.store(false);
     }
     monitor.limit = user_limit;
   }
-  if(!has_features)
+  if(!has_features && !monitor.stop.load()) {
+    auto watchdog = watch();
     c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
-  watchdog.reset();
+  }
   report.evaluations = monitor.count.load();
   if(monitor.stop.load()) return stopped(monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
@@ -355,7 +480,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
   monitor.limit = in.max_evaluations;
-  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds);
+  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds, false);
   monitor.throw_on_stop = true;
   const Function function{&in.function, &monitor};
 
