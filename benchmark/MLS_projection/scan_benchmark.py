@@ -21,15 +21,20 @@ part's mesh as fractions of its bounding-box diagonal (RMS and maximum).
 
 import argparse
 import os
+import re
 import statistics
 import subprocess
 import sys
 import tempfile
 import time
 
-PARTS = {  # name: (OpenSCAD file, definitions)
-    "example002": ("/usr/share/openscad/examples/Old/example002.scad", ["-D", "$fn=96"]),
-    "example006": ("/usr/share/openscad/examples/Old/example006.scad", []),
+EXAMPLES = "/usr/share/openscad/examples/Old/"
+PARTS = {  # name: (OpenSCAD file or source, definitions)
+    "example002": (EXAMPLES + "example002.scad", ["-D", "$fn=96"]),
+    "example006": (EXAMPLES + "example006.scad", []),
+    "example009": (EXAMPLES + "example009.scad", []),  # a fan: thin blades
+    # smooth, no crease: the hull of an ellipsoid and a sphere
+    "blob": ("hull() { scale([1, 0.7, 0.5]) sphere(r=10, $fn=120); translate([9, 0, 3]) sphere(r=4, $fn=90); }", []),
 }
 
 
@@ -43,6 +48,27 @@ def run(cmd, quiet=True):
     if proc.returncode != 0:
         raise RuntimeError("%s failed:\n%s" % (" ".join(cmd), err.decode(errors="replace")))
     return seconds, rusage.ru_maxrss
+
+
+def run_until(cmd, timeout):
+    """Runs `cmd` for at most `timeout` seconds; returns (seconds, peak resident KiB, exit status
+    or None when killed at the timeout, the last line of stderr)."""
+    start = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    status = None
+    while True:
+        pid, wstatus, rusage = os.wait4(proc.pid, os.WNOHANG)
+        if pid:
+            status = os.waitstatus_to_exitcode(wstatus)
+            break
+        if time.perf_counter() - start > timeout:
+            proc.kill()
+            _, _, rusage = os.wait4(proc.pid, 0)
+            break
+        time.sleep(0.05)
+    seconds = time.perf_counter() - start
+    err = proc.stderr.read().decode(errors="replace").strip().splitlines()
+    return seconds, rusage.ru_maxrss, status, err[-1] if err else ""
 
 
 def output_of(cmd):
@@ -67,6 +93,10 @@ def distances(tools, mesh, points):
 def export_part(name, work):
     scad, definitions = PARTS[name]
     mesh = os.path.join(work, name + ".off")
+    if not scad.endswith(".scad"):
+        source, scad = scad, os.path.join(work, name + ".scad")
+        with open(scad, "w") as f:
+            f.write(source + "\n")
     if not os.path.exists(mesh):
         subprocess.run(["openscad", *definitions, "-o", mesh, scad], check=True, capture_output=True)
     return mesh
@@ -111,6 +141,56 @@ def measure_scan(tools, mesh, scan, n, args, log):
     return row
 
 
+def measure_meshing(tools, mesh, scan, args, log):
+    """mls_mesh with its defaults and poisson_mesh on `scan`, both on all cores; their time, peak
+    memory and `scan_part mesh` figures against the part `mesh`."""
+    d = os.path.dirname(scan)
+    rows = []
+    cases = {
+        "MLS": [tools["mls_mesh"], "--input", scan, "--output", os.path.join(d, "mls.off"), "--quiet"],
+        "Poisson": [tools["poisson_mesh"], scan, os.path.join(d, "poisson.off")],
+    }
+    for name, cmd in cases.items():
+        out = cmd[-1] if name == "Poisson" else cmd[4]
+        if os.path.exists(out):
+            os.remove(out)
+        seconds, memory, status, message = run_until(cmd, args.timeout)
+        row = {"method": name, "seconds": seconds, "memory": memory, "message": message}
+        if status is None:
+            row["message"] = "no mesh: stopped after %.0f s" % args.timeout
+        elif status != 0:
+            row["message"] = "no mesh: " + message
+        fields = output_of([tools["scan_part"], "mesh", mesh, out]).split() if os.path.exists(out) else ["none"]
+        row.update(dict(zip(fields[0::2], fields[1::2])))
+        log("    %-8s %.1f s %s" % (name, seconds, " ".join(fields)))
+        rows.append(row)
+    return rows
+
+
+def print_meshing(rows, args):
+    print("## Meshing scans of CAD parts (%d points, mls_mesh defaults against CGAL's Poisson, both on all "
+          "cores, one run)\n" % args.points)
+    print("| part | noise | seed | method | s | peak MB | closed | manifold | components | self-intersecting | "
+          "Hausdorff | RMS | normal error (deg) | sharp-edge distance | note |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        get = lambda k: r.get(k, "-")
+        note = r["message"] if r["message"].startswith("no mesh") else ""
+        features = re.search(r"(\d+) feature polylines, (\d+) corners( \(not protected)?", r["message"])
+        if r["method"] == "MLS" and features and not note:
+            note = "%s polylines, %s corners%s" % (features.group(1), features.group(2),
+                                                  ", not protected" if features.group(3) else "")
+        print("| %s | %g | %s | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["part"], r["noise"], r["seed"], r["method"], r["seconds"], r["memory"] / 1024., get("closed"),
+            get("manifold"), get("components"), get("self_intersecting"), get("hausdorff"), get("rms"),
+            get("normal_deg"), get("edge_distance"), note))
+    mls = [r for r in rows if r["method"] == "MLS"]
+    good = sum(1 for r in mls if r.get("closed") == "1" and r.get("manifold") == "1")
+    print("\nMLS: %d closed manifold meshes of %d scans; time MLS / Poisson, median %.2f" % (
+        good, len(mls), statistics.median(m["seconds"] / p["seconds"]
+                                           for m, p in zip(rows[0::2], rows[1::2]))))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--bin", required=True, help="the directory of mls_project, scan_part and pcl_mls")
@@ -122,9 +202,12 @@ def main():
     parser.add_argument("--isolated", type=int, default=2000, help="queries of the isolated case")
     parser.add_argument("--scale", type=int, default=0, help="also project this many points (e.g. 1000000)")
     parser.add_argument("--work", default=None, help="directory of the scans (default: a temporary one)")
+    parser.add_argument("--meshing", action="store_true", help="mesh the scans (mls_mesh, poisson_mesh) instead")
+    parser.add_argument("--timeout", type=float, default=900, help="seconds after which a mesher is stopped")
     args = parser.parse_args()
 
-    tools = {t: os.path.join(args.bin, t) for t in ("mls_project", "scan_part", "pcl_mls")}
+    names = ("mls_mesh", "scan_part", "poisson_mesh") if args.meshing else ("mls_project", "scan_part", "pcl_mls")
+    tools = {t: os.path.join(args.bin, t) for t in names}
     for t, path in tools.items():
         if not os.access(path, os.X_OK):
             sys.exit("scan_benchmark: %s not found in %s" % (t, args.bin))
@@ -142,9 +225,17 @@ def main():
                 scan = os.path.join(d, "scan.xyz")
                 subprocess.run([tools["scan_part"], "sample", mesh, str(args.points), noise, seed, scan], check=True)
                 log("%s, noise %s, seed %s" % (part, noise, seed))
+                if args.meshing:
+                    for row in measure_meshing(tools, mesh, scan, args, log):
+                        row.update(part=part, noise=float(noise), seed=seed)
+                        rows.append(row)
+                    continue
                 row = measure_scan(tools, mesh, scan, args.points, args, log)
                 row.update(part=part, noise=float(noise), seed=seed)
                 rows.append(row)
+    if args.meshing:
+        print_meshing(rows, args)
+        return
 
     print("## Projection on scans of CAD parts (%d points, medians of %d runs, one thread unless said)\n"
           % (args.points, args.runs))
