@@ -159,7 +159,7 @@ def measure_meshing(tools, mesh, scan, args, log):
         if status is None:
             row["message"] = "no mesh: stopped after %.0f s" % args.timeout
         elif status != 0:
-            row["message"] = "no mesh: " + message
+            row["message"] = "no mesh: " + re.sub(r"^.*failed: ", "", message)
         fields = output_of([tools["scan_part"], "mesh", mesh, out]).split() if os.path.exists(out) else ["none"]
         row.update(dict(zip(fields[0::2], fields[1::2])))
         log("    %-8s %.1f s %s" % (name, seconds, " ".join(fields)))

@@ -238,7 +238,8 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     // the sphere check on the function itself (the clamped one is 0 on the sphere)
     if(!internal::is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
                                         radius))
-      return fail("the surface is not closed (the points bound no volume: coplanar points, an open surface)");
+      return fail("the surface is not closed (its inside reaches the bounding sphere: the points bound no volume, e.g. "
+                  "coplanar points or an open scan, or the sides of a thin part were not told apart)");
     if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
     const auto& seeds = function.projected_seeds();
     const std::size_t stride = (std::max<std::size_t>)(1, seeds.size() / 128);
