@@ -195,8 +195,7 @@ struct Seed_projection<Projection, false> {
 /// where its energy (weighted mean squared residual) is at most
 /// \f$\max\big((\rho h)^2, \kappa^2 E_{5}\big)\f$, with \f$\rho\f$ = `screening_residual`,
 /// \f$\kappa\f$ = `screening_noise_factor` and \f$E_{5}\f$ the 5th percentile of the seeds'
-/// energies (the level of the noise on the smooth parts), or, with `Mixed_projection`, at most
-/// its own noise threshold (`Mixed_projection::screening_threshold()`) when that is larger. The other seeds (near creases and
+/// energies (the level of the noise on the smooth parts). The other seeds (near creases and
 /// corners, where a quadratic cannot follow the data) are projected by the operator; with
 /// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
 /// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
@@ -733,10 +732,6 @@ private:
       }
       const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
       d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
-      // the mixed operator's own screening: its noise threshold (so that the seeds get the fits
-      // its projections would get; on noisy data, a fixed residual would hand them all to the fan)
-      if constexpr(internal::is_mixed_projection<Projection>::value)
-        d.threshold = (std::max)(d.threshold, d.projection.screening_threshold());
       const double lambda = d.options.fallback_noise_factor;
       d.fallback_threshold = (std::max)(d.threshold, lambda * lambda * noise);
       d.seed_projection.emplace(d.projection, d.threshold);

@@ -34,10 +34,6 @@ struct finds_creases<Closest_point_projection<K, Wedge_fan_function_space<3, N>,
 template <class K, Operator_kind kind, class Sharp>
 struct finds_creases<Mixed_projection<K, 3, kind, Sharp>> : std::true_type {};
 
-template <class Projection> struct is_mixed_projection : std::false_type {};
-template <class K, int D, Operator_kind kind, class Sharp>
-struct is_mixed_projection<Mixed_projection<K, D, kind, Sharp>> : std::true_type {};
-
 // The number of coefficients of P_L's quadratic (Polynomial_function_space<3>): the local fits of
 // a screened operator are told apart by it, so the operator's spaces must not have as many.
 constexpr int levin_quadratic_parameters = Polynomial_function_space<3>::number_of_parameters;
