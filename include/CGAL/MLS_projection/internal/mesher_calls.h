@@ -175,7 +175,13 @@ public:
       auto last_change = start;
       std::size_t last_count = monitor.count.load();
       std::unique_lock<std::mutex> lock(mutex_);
-      while(!done_cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return done_; })) {
+      // polled every 0.1 s, or at the time limit when sooner
+      const auto poll = [&] {
+        double wait = 0.1;
+        if(timed) wait = (std::min)(wait, (std::max)(0., seconds - std::chrono::duration<double>(Clock::now() - start).count()));
+        return std::chrono::duration<double>(wait);
+      };
+      while(!done_cv_.wait_for(lock, poll(), [this] { return done_; })) {
         const auto now = Clock::now();
         const double elapsed = std::chrono::duration<double>(now - start).count();
         const std::size_t count = monitor.count.load();
@@ -184,7 +190,7 @@ public:
           last_change = now;
         }
         const double idle = std::chrono::duration<double>(now - last_change).count();
-        if(timed && elapsed > seconds) {
+        if(timed && elapsed >= seconds) {
           monitor.time_hit.store(true);
         } else if(stall_detection && idle > (std::max)(5., 0.25 * elapsed)) {
           monitor.stall_hit.store(true);
@@ -388,7 +394,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   const auto watch = [&] {
     double seconds = 0;
     if(in.max_seconds > 0)
-      seconds = (std::max)(1e-3, in.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      seconds = (std::max)(1e-9, in.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return std::make_unique<Meshing_watchdog>(monitor, seconds, true);
   };
   const Monitored_function<GeomTraits> function{&in.function, &monitor};
