@@ -168,10 +168,10 @@ struct Meshing_options {
   /// evaluation limit"), after this many evaluations of the implicit function: a bound on the
   /// work of a refinement that keeps evaluating without end. 0 (default): 100 times the expected
   /// number, \f$250\,n\,(s/\mathrm{size})^2\f$ for \f$n\f$ points of average spacing \f$s\f$, at least
-  /// \f$10^6\f$ (normal runs use 1 to 2 times the expected number).
+  /// \f$10^6\f$ (a 50000-point scan of a CAD part used 0.6 times the expected number).
   std::size_t max_evaluations = 0;
   /// Mesh_3 with the feature polylines is stopped after this many times the expected number of
-  /// evaluations (see `max_evaluations`; normal runs use less than once), or as soon as it stalls
+  /// evaluations (see `max_evaluations`), or as soon as it stalls
   /// (no new evaluation of the function for 5 seconds and a quarter of the meshing time: its
   /// manifold refinement next to a protected polyline can loop without end), and the surface is
   /// meshed again without them (`Meshing_report::feature_budget_exceeded`). 0: no budget (the

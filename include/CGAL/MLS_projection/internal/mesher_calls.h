@@ -307,7 +307,9 @@ private:
     const double dx = CGAL::to_double(b.x()) - ax, dy = CGAL::to_double(b.y()) - ay, dz = CGAL::to_double(b.z()) - az;
     const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
     const auto f = [&](double t) { return function_.value(ax + t * dx, ay + t * dy, az + t * dz); };
-    double t0 = 0, t1 = 1, f0 = f(0.), f1 = f(1.);
+    // the ends as the labels were computed (cached): a + (b - a) may differ from b by rounding
+    double t0 = 0, t1 = 1, f0 = f(0.);
+    double f1 = function_.value(CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z()));
     double t = 0.5;
     int side = 0;
     for(int it = 0; it < 64 && (t1 - t0) * length > error_; ++it) {
