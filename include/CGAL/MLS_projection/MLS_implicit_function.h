@@ -184,18 +184,20 @@ struct Seed_projection<Projection, false> {
 /// ill-defined), which put bubbles inside the solid and holes in its surface, and the fans that
 /// fit noise (crumpled, in tilted frames). Where the operator's fit of a seed is dropped or its
 /// projection failed, P_L's fit of the seed (computed by the screening, below) is blended in its
-/// place when it passes the same test and its energy is at most \f$\mu^2 E_{5}\f$ (\f$\mu\f$ =
-/// `fallback_noise_factor`, \f$E_5\f$ as below): a fit of noise, not of a crease, which it would
-/// round. On noiseless data \f$E_5\f$ is about 0 and no seed falls back; on noisy data, many.
+/// place when it passes the same test and its energy is at most \f$\mu^2 \hat\sigma^2\f$ (\f$\mu\f$ =
+/// `fallback_noise_factor`, \f$\hat\sigma^2\f$ as below): a fit of noise, not of a crease, which it
+/// would round. On noiseless data \f$\hat\sigma^2\f$ is about 0 and no seed falls back; on noisy
+/// data, many.
 ///
 /// <b>Screening by P_L.</b> With an operator that finds creases (`Wedge_fan_function_space`
 /// alone or in `Mixed_projection`) and `levin_screening` set (default), every seed is first
 /// projected by Levin's operator \f$\mathcal{P}_L\f$ with a quadratic (some 0.3 ms, against 10
 /// to 200 ms for the closest-point operators), and its fit is kept where it explains the data:
 /// where its energy (weighted mean squared residual) is at most
-/// \f$\max\big((\rho h)^2, \kappa^2 E_{5}\big)\f$, with \f$\rho\f$ = `screening_residual`,
-/// \f$\kappa\f$ = `screening_noise_factor` and \f$E_{5}\f$ the 5th percentile of the seeds'
-/// energies (the level of the noise on the smooth parts). The other seeds (near creases and
+/// \f$\max\big((\rho h)^2, \kappa^2 \hat\sigma^2\big)\f$, with \f$\rho\f$ = `screening_residual`,
+/// \f$\kappa\f$ = `screening_noise_factor` and \f$\hat\sigma^2\f$ the variance of the noise estimated
+/// from the input (`Mixed_projection::noise_variance()`; with the defaults, the threshold is the
+/// mixed operator's own). The other seeds (near creases and
 /// corners, where a quadratic cannot follow the data) are projected by the operator; with
 /// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
 /// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
@@ -716,20 +718,10 @@ private:
         d.operator_seeds = queries.size();
         return project_all(*d.seed_projection, queries, results, 0., 0.95);
       }
-      // P_L on every seed, the threshold from their energies, the operator on the others
+      // P_L on every seed, the operator on the seeds whose energy exceeds the noise threshold
       const Seed_projection_type probe(d.projection, 0.);
       if(!project_all(probe.levin(), queries, results, 0., 0.05)) return false;
-      std::vector<double> energies;
-      for(const Result& r : results)
-        if(r.is_success() && std::isfinite(r.energy)) energies.push_back(r.energy);
-      // the noise level of the smooth parts: a low percentile (on a small box, nearly every seed
-      // is near a crease, so the median or even the first quartile is a crease's energy)
-      double noise = 0;
-      if(!energies.empty()) {
-        auto q = energies.begin() + std::ptrdiff_t(energies.size() / 20);
-        std::nth_element(energies.begin(), q, energies.end());
-        noise = *q;
-      }
+      const double noise = internal::noise_variance(d.projection);
       const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
       d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
       const double lambda = d.options.fallback_noise_factor;

@@ -51,17 +51,14 @@ struct Implicit_function_options {
   /// The screening keeps P_L's fit when its weighted RMS residual is at most this (units of
   /// \f$h\f$)...
   double screening_residual = 0.01;
-  /// ... or at most this factor times the RMS residual of the 5th percentile of the seeds (the
-  /// noise level of the smooth parts). 0 (default): off. That estimate fails on coarse samplings,
-  /// where nearly every seed is near a crease (a box of 600 samples, 10 by 10 per face: with 3,
-  /// none of its 488 seeds went to the operator and its edges were lost). On noisy data of
-  /// large smooth parts, 3 sends fewer seeds to the operator.
-  double screening_noise_factor = 0.;
+  /// ... or at most this factor times the estimated RMS of the noise (see
+  /// `Mixed_projection::noise_variance()`; the default is the mixed operator's margin,
+  /// \f$\sqrt{2.5}\f$, so that a seed gets the fit the mixed operator would give it).
+  double screening_noise_factor = 1.58;
   /// Where the operator's fit of a seed is not blended (see `MLS_implicit_function`, "Seeds"),
   /// P_L's fit of the seed is blended in its place when its weighted RMS residual is at most this
-  /// factor times the RMS residual of the 5th percentile of the seeds (the noise level; about 0
-  /// without noise, so that no crease is rounded by a quadratic), and it passes the same test.
-  /// 0: never.
+  /// factor times the estimated RMS of the noise (about 0 without noise, so that no crease is
+  /// rounded by a quadratic), and it passes the same test. 0: never.
   double fallback_noise_factor = 3.;
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
   /// no normals): `pca_estimate_normals` and `mst_orient_normals`.

@@ -8,11 +8,10 @@
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/internal/noise_level.h>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
-#include <vector>
 
 namespace CGAL {
 namespace MLS {
@@ -25,11 +24,12 @@ namespace MLS {
 ///
 /// 1. <b>Screening.</b> The fan is tried where \f$\mathcal{P}_L\f$ fails or its energy (weighted
 ///    mean squared residual) exceeds the noise threshold
-///    \f[ \tau = \max\big((\rho h)^2,\; \kappa^2 E_{25}\big), \f]
-///    with \f$E_{25}\f$ the first quartile of the \f$\mathcal{P}_L\f$ energies of up to 512 input
-///    points spread over the input (the level of the noise on the smooth parts, which cover most
-///    of a scan), \f$\kappa^2 = 3\f$ (a margin over the spread of the energies of smooth
-///    parts, chosen on the benchmark's scans) and \f$\rho = 0.01\f$ (on noiseless data, a
+///    \f[ \tau = \max\big((\rho h)^2,\; \kappa^2 \hat\sigma^2\big), \f]
+///    with \f$\hat\sigma^2\f$ the variance of the noise estimated from the input (`noise_variance()`:
+///    the residuals of the 12 nearest neighbours of up to 512 input points about their plane, at
+///    a scale where coarse samplings of creased shapes still have points away from every crease),
+///    \f$\kappa^2 = 2.5\f$ (a margin over the spread of \f$\mathcal{P}_L\f$'s energies on noisy
+///    smooth parts, chosen on the benchmark's scans) and \f$\rho = 0.01\f$ (on noiseless data, a
 ///    residual of a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts).
 /// 2. <b>Model selection.</b> Where the fan is tried, it is kept only when it explains the data
 ///    clearly better than the quadratic, \f$E_{\mathrm{sharp}} < \sigma\, E_{\mathrm{smooth}}\f$,
@@ -81,11 +81,12 @@ public:
     : Mixed_projection(std::make_shared<const Samples>(points, np), options, sharp_preference) {}
 
   /// Shares an existing sample set (and its kd-tree) with other operators. Estimates the noise
-  /// threshold of the screening (up to 512 projections by \f$\mathcal{P}_L\f$).
+  /// level of the samples (up to 512 neighbourhoods of 12 points).
   explicit Mixed_projection(std::shared_ptr<const Samples> samples, const Projection_options& options = Projection_options(),
                             double sharp_preference = default_sharp_preference)
     : smooth_(samples, options), sharp_(samples, with_bandwidth(options, smooth_.bandwidth())),
-      sharp_preference_(sharp_preference), threshold_(noise_threshold(smooth_)) {
+      sharp_preference_(sharp_preference), noise_variance_(internal::estimate_noise_variance(*samples)),
+      threshold_(noise_threshold(bandwidth(), noise_variance_)) {
     CGAL_precondition(sharp_preference > 0 && sharp_preference <= 1);
   }
 
@@ -126,12 +127,13 @@ public:
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
-  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the noise threshold
-  /// \f$\tau\f$ of the screening (a squared length), the options, the shared sample set, and the
-  /// two operators.
+  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the estimated noise
+  /// variance \f$\hat\sigma^2\f$ of the samples, the noise threshold \f$\tau\f$ of the screening (a
+  /// squared length), the options, the shared sample set, and the two operators.
   /// @{
   double bandwidth() const { return smooth_.bandwidth(); }
   double sharp_preference() const { return sharp_preference_; }
+  double noise_variance() const { return noise_variance_; }
   double screening_threshold() const { return threshold_; }
   const Projection_options& options() const { return sharp_.options(); }
   const Samples& samples() const { return smooth_.samples(); }
@@ -153,28 +155,16 @@ private:
     return options;
   }
 
-  // max((rho h)^2, kappa^2 E_25) of the class documentation.
-  static double noise_threshold(const Smooth_projection& smooth) {
-    constexpr double rho = 0.01, kappa2 = 3.;
-    constexpr std::size_t probes = 512;
-    const auto& samples = smooth.samples();
-    const double h = smooth.bandwidth(), floor = (rho * h) * (rho * h);
-    if(samples.size() < Smooth_projection::minimum_points()) return floor;
-    std::vector<double> energies;
-    const std::size_t stride = (std::max<std::size_t>)(1, samples.size() / probes);
-    for(std::size_t i = 0; i < samples.size(); i += stride) {
-      const Result r = smooth.project(samples.to_world(samples.local_point(i)));
-      if(r.is_success() && std::isfinite(r.energy)) energies.push_back(r.energy);
-    }
-    if(energies.empty()) return floor;
-    const auto quartile = energies.begin() + std::ptrdiff_t(energies.size() / 4);
-    std::nth_element(energies.begin(), quartile, energies.end());
-    return (std::max)(floor, kappa2 * *quartile);
+  // max((rho h)^2, kappa^2 sigma^2) of the class documentation.
+  static double noise_threshold(double h, double noise_variance) {
+    constexpr double rho = 0.01, kappa2 = 2.5;
+    return (std::max)((rho * h) * (rho * h), kappa2 * noise_variance);
   }
 
   Smooth_projection smooth_;
   Sharp_projection sharp_;
   double sharp_preference_;
+  double noise_variance_;
   double threshold_;
 };
 

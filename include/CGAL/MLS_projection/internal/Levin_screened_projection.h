@@ -18,6 +18,7 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_options.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/internal/noise_level.h>
 
 #include <memory>
 #include <type_traits>
@@ -33,6 +34,18 @@ template <class K, int N, Operator_kind kind>
 struct finds_creases<Closest_point_projection<K, Wedge_fan_function_space<3, N>, kind>> : std::true_type {};
 template <class K, Operator_kind kind, class Sharp>
 struct finds_creases<Mixed_projection<K, 3, kind, Sharp>> : std::true_type {};
+
+template <class Projection> struct is_mixed_projection : std::false_type {};
+template <class K, int D, Operator_kind kind, class Sharp>
+struct is_mixed_projection<Mixed_projection<K, D, kind, Sharp>> : std::true_type {};
+
+// The noise variance of the samples of `projection` (see estimate_noise_variance()): the mixed
+// operator's, which estimated it at construction.
+template <class Projection>
+double noise_variance(const Projection& projection) {
+  if constexpr(is_mixed_projection<Projection>::value) return projection.noise_variance();
+  else return estimate_noise_variance(projection.samples());
+}
 
 // The number of coefficients of P_L's quadratic (Polynomial_function_space<3>): the local fits of
 // a screened operator are told apart by it, so the operator's spaces must not have as many.
