@@ -26,8 +26,9 @@ namespace MLS {
 ///    mean squared residual) exceeds the noise threshold
 ///    \f[ \tau = \max\big((\rho h)^2,\; \kappa^2 \hat\sigma^2\big), \f]
 ///    with \f$\hat\sigma^2\f$ the variance of the noise estimated from the input (`noise_variance()`:
-///    the residuals of the 12 nearest neighbours of up to 512 input points about their plane, at
-///    a scale where coarse samplings of creased shapes still have points away from every crease),
+///    the residuals of the 12 nearest neighbours of up to 512 input points about their
+///    least-squares quadratic, at a scale where coarse samplings of creased shapes still have
+///    points away from every crease),
 ///    \f$\kappa^2 = 2.5\f$ (a margin over the spread of \f$\mathcal{P}_L\f$'s energies on noisy
 ///    smooth parts, chosen on the benchmark's scans) and \f$\rho = 0.01\f$ (on noiseless data, a
 ///    residual of a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts).
