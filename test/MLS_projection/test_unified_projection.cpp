@@ -322,6 +322,15 @@ std::vector<Epick::Point_3> cube(double s) {
         if(i == 0 || i == n || j == 0 || j == n || k == 0 || k == n) pts.emplace_back(-0.5 + i * s, -0.5 + j * s, -0.5 + k * s);
   return pts;
 }
+// n points of the unit sphere on a Fibonacci lattice.
+std::vector<Epick::Point_3> fibonacci_sphere(int n) {
+  std::vector<Epick::Point_3> sphere;
+  for(int i = 0; i < n; ++i) {
+    const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * CGAL_PI * (3 - std::sqrt(5.));
+    sphere.emplace_back(rho * std::cos(a), rho * std::sin(a), z);
+  }
+  return sphere;
+}
 double cube_distance(const V3& p) {
   const V3 q = p.cwiseAbs() - V3::Constant(0.5);
   const double outside = q.cwiseMax(0.).norm();
@@ -681,12 +690,8 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
     MLS_CHECK(fan >= 18);
   }
   {
-    std::vector<Epick::Point_3> sphere;
     const int n = 4000;
-    for(int i = 0; i < n; ++i) { // Fibonacci sphere, radius 1
-      const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * M_PI * (3 - std::sqrt(5.));
-      sphere.emplace_back(rho * std::cos(a), rho * std::sin(a), z);
-    }
+    const std::vector<Epick::Point_3> sphere = fibonacci_sphere(n);
     MLS::Mixed_projection<Epick, 3> PM(sphere);
     int quadratic = 0;
     double worst = 0;
@@ -738,12 +743,7 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     MLS_CHECK(fan == 4);
   }
   {
-    std::vector<Epick::Point_3> sphere;
-    const int n = 4000;
-    for(int i = 0; i < n; ++i) { // Fibonacci sphere, radius 1
-      const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * CGAL_PI * (3 - std::sqrt(5.));
-      sphere.emplace_back(rho * std::cos(a), rho * std::sin(a), z);
-    }
+    const std::vector<Epick::Point_3> sphere = fibonacci_sphere(4000);
     MLS::Mixed_projection<Epick, 3> PM(sphere);
     const double h = PM.bandwidth();
     std::cout << "  noiseless sphere: 2.5 x estimated variance / (0.01 h)^2 = "
