@@ -170,7 +170,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "\n"
        "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6, .ply and .off\n"
        "give their vertices (normals when present). Without normals, normals are estimated and\n"
-       "oriented (jet fitting, minimum spanning tree). A 2D input is an error.\n"
+       "oriented (PCA, minimum spanning forest). A 2D input is an error.\n"
        "Without --input, the input is the built-in solid: the box [-1,1] x [-0.6,0.6] x [-0.4,0.4]\n"
        "with its edge at x = 1, z = 0.4 rounded (a quarter-cylinder fillet of radius 0.25) and a\n"
        "cylindrical bore of radius 0.25 along z at (x, y) = (-0.35, 0): 15 sharp edges (straight\n"

@@ -86,7 +86,8 @@ public:
   };
 
   /// Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood
-  /// (the points within the weight's support plus a margin of the frame origin).
+  /// (the points within the weight's support plus a margin of the frame origin, on the side
+  /// `nbh.side`).
   Frame find_frame(const Vec& r, internal::Neighborhood<D>& nbh) const {
     Frame frame;
     const double h = this->h_, support = this->weight_.support_radius();
@@ -142,6 +143,7 @@ public:
     const Vec r = this->samples().to_local(query);
     if(!r.allFinite()) return this->failure(query, Projection_status::INVALID_QUERY);
     thread_local internal::Neighborhood<D> nbh;
+    nbh.side = this->side_at(r);
     Frame frame = find_frame(r, nbh);
     if(frame.status != Projection_status::CONVERGED) return this->failure(query, frame.status);
 
@@ -233,7 +235,7 @@ private:
       start.offset = (pca.centroid - r).dot(start.normal) / h;
       return Projection_status::CONVERGED;
     }
-    const auto init = this->initial_frame(r, minimum_points());
+    const auto init = this->initial_frame(r, minimum_points(), nbh);
     if(init.status != Projection_status::CONVERGED) return init.status;
     start.normal = init.normal;
     start.offset = (init.origin - r).dot(init.normal) / h;

@@ -164,8 +164,8 @@ struct Seed_projection<Projection, false> {
 ///
 /// <b>Orientation.</b> The sign comes from a consistently oriented normal field on the samples:
 /// the input normals when the sample set has some, otherwise normals estimated with
-/// `pca_estimate_normals` and oriented with `mst_orient_normals` (the points the MST leaves
-/// unoriented are oriented away from the centroid; see `internal::estimate_oriented_normals()`).
+/// `pca_estimate_normals` and oriented along a minimum spanning forest of their neighbour graph,
+/// each tree turned outward as a whole (see `internal::estimate_oriented_normals()`).
 /// The normal of each local fit is flipped to agree with the oriented normals of the samples
 /// nearest to its projected point (the sign of the sum of the dot products with the 6 nearest).
 ///
@@ -480,7 +480,8 @@ private:
   // points, and of P + t n and P - t n for t = h, 1.5h (the blend's reach), must lie on parts of
   // the member less steep than 75 degrees in its frame (the side of a part perpendicular to the
   // frame, e.g. a thin vertical cone of a wedge fan, is ill-defined). A fit that fails more than
-  // 10% of the tests would carry the wrong sign into the blend.
+  // 10% of the tests would carry the wrong sign into the blend. With `one_sided` projections,
+  // only the samples on the side of `P` are tested (those the fit saw).
   static bool agrees_with_normals(const Data& d, const Fit& f, const V& P, const V& nP) {
     if(d.sample_normals.empty() || f.count == 0) return true;
     std::size_t wrong = 0, tests = 0;
@@ -490,11 +491,14 @@ private:
       if(!(cp.normal[2] >= 0.25) || (expected != 0 && !(f.sign * cp.signed_distance * expected > 0))) ++wrong;
     };
     thread_local std::vector<std::size_t> idx;
+    const V side = d.projection.options().one_sided && d.projection.samples().has_normals()
+                     ? internal::side_at<3>(d.projection.samples(), P)
+                     : V(V::Zero());
     idx.clear();
     d.projection.samples().in_ball(P, 2 * d.h, idx);
     for(std::size_t i : idx) {
       const V& n = d.sample_normals[i];
-      if(!(n.squaredNorm() > 0.25)) continue;
+      if(!(n.squaredNorm() > 0.25) || n.dot(side) < -0.5) continue;
       const V& q = d.projection.samples().local_point(i);
       test(V(q + 0.5 * d.h * n), 1);
       test(V(q - 0.5 * d.h * n), -1);

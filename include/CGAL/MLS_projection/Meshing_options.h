@@ -61,7 +61,7 @@ struct Implicit_function_options {
   /// rounded by a quadratic), and it passes the same test. 0: never.
   double fallback_noise_factor = 3.;
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
-  /// no normals): `pca_estimate_normals` and `mst_orient_normals`.
+  /// no normals): `pca_estimate_normals` and the orientation's neighbour graph.
   int normal_neighbors = 18;
 };
 
@@ -76,8 +76,8 @@ struct Meshing_report {
   double average_spacing = 0;
   /// The bandwidth \f$h\f$ of the projection.
   double bandwidth = 0;
-  /// Points whose estimated normal was oriented by the fall-back (away from the centroid) rather
-  /// than by `mst_orient_normals` (0 when the input has normals).
+  /// Points whose estimated normal was oriented by the fall-back (away from the centroid: points
+  /// without a neighbour in the orientation's graph; 0 when the input has normals).
   std::size_t normals_by_fallback = 0;
   /// Seeds whose local fits are blended, seeds projected but not blended (see
   /// `MLS_implicit_function::number_of_unblended_seeds()`), failed seeds, and the blended seeds

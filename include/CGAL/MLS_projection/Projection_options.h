@@ -35,6 +35,13 @@ struct Projection_options {
   /// Whether `project_points()` continues each projection from the fit of a nearby query, with
   /// the operators that can (`Closest_point_projection`, `Mixed_projection`).
   bool warm_starts = true;
+  /// Whether each projection weighs only the input points on its query's side of a thin part:
+  /// with input normals, the points whose normal makes more than \f$120^\circ\f$ with the sum of
+  /// the normals of the 6 input points nearest to the query are left out (the other side of a plate or blade a
+  /// few spacings thick, which would pull the fit to its middle). No effect without input
+  /// normals. Off by default: it also leaves out the other face of a crease sharper than
+  /// \f$60^\circ\f$. `mls_surface_reconstruction()` turns it on.
+  bool one_sided = false;
 };
 
 } // namespace MLS

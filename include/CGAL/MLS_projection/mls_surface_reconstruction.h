@@ -189,6 +189,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     items, parameters::point_map(First_of_pair_property_map<Item>()).normal_map(Second_of_pair_property_map<Item>()));
   Projection_options projection_options;
   projection_options.bandwidth = options.bandwidth;
+  projection_options.one_sided = true;
 
   const auto run = [&](const auto& projection) -> bool {
     using Projection = std::decay_t<decltype(projection)>;

@@ -13,16 +13,38 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
+/// The side of a query at `r` (`Neighborhood::side`) in a sample set with normals: the direction
+/// of the sum of the normals of the 6 input points nearest to `r` (a vote, so that one wrong
+/// normal does not turn a query to the other side), or zero when they cancel.
+template <int D, class Samples>
+Vec<D> side_at(const Samples& samples, const Vec<D>& r) {
+  thread_local std::vector<std::size_t> idx;
+  samples.k_nearest(r, 6, idx);
+  Vec<D> s = Vec<D>::Zero();
+  for(std::size_t i : idx) s += samples.local_normal(i);
+  const double len = s.norm();
+  return len > 1e-3 ? Vec<D>(s / len) : Vec<D>(Vec<D>::Zero());
+}
+
 /// The input points within `radius` of `centre`, copied contiguously (local coordinates).
 /// An energy whose weights vanish beyond the support radius `s` of the weight function
 /// is computed exactly from this set for every frame origin `q` with
 /// `|q - centre| + s <= radius` (see `covers()`); operators gather again when `q` leaves it.
+/// With a nonzero `side` (a unit normal) and input normals, the points whose normal makes more
+/// than 120 degrees with `side` are left out (`Projection_options::one_sided`).
 template <int D>
 struct Neighborhood {
   std::vector<std::size_t> indices;
   std::vector<Vec<D>> points;
   Vec<D> centre = Vec<D>::Zero();
   double radius = 0;
+  Vec<D> side = Vec<D>::Zero();
+
+  /// Whether the input point of index `i` is on this neighbourhood's side.
+  template <class Samples>
+  bool on_side(const Samples& samples, std::size_t i) const {
+    return !samples.has_normals() || !(samples.local_normal(i).dot(side) < -0.5);
+  }
 
   template <class Samples>
   void gather(const Samples& samples, const Vec<D>& c, double r) {
@@ -31,6 +53,7 @@ struct Neighborhood {
     indices.clear();
     points.clear();
     samples.for_each_in_ball(c, r, [&](std::size_t i, const Vec<D>& p) {
+      if(!on_side(samples, i)) return;
       indices.push_back(i);
       points.push_back(p);
     });
@@ -43,6 +66,7 @@ struct Neighborhood {
     Neighborhood ball;
     ball.centre = c;
     ball.radius = r;
+    ball.side = side;
     for(std::size_t i = 0; i < points.size(); ++i) {
       if((points[i] - c).squaredNorm() > r * r) continue;
       ball.indices.push_back(indices[i]);

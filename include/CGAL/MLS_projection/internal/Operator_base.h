@@ -73,23 +73,38 @@ protected:
     return Weight_function::polynomial_support;
   }
 
+  /// The side of a query at `r` (`internal::side_at()`) with `Projection_options::one_sided` and
+  /// input normals, else zero (no side).
+  Vec<D> side_at(const Vec<D>& r) const {
+    return options_.one_sided && samples_->has_normals() ? internal::side_at<D>(*samples_, r) : Vec<D>(Vec<D>::Zero());
+  }
+
   struct Initial_frame {
     Vec<D> origin, normal;
     Pca<D> pca;
     Projection_status status = Projection_status::CONVERGED;
   };
 
-  /// Weighted PCA of the `k` nearest neighbours of `r` (Gaussian weights of bandwidth h,
-  /// relative to the nearest neighbour so that far queries do not underflow); the frame
-  /// origin is `r` projected on the PCA plane.
-  Initial_frame initial_frame(const Vec<D>& r, std::size_t minimum_points) const {
+  /// Weighted PCA of the `k` nearest neighbours of `r` on the side of `nbh` (of the `2k` nearest;
+  /// Gaussian weights of bandwidth h, relative to the nearest neighbour so that far queries do
+  /// not underflow); the frame origin is `r` projected on the PCA plane.
+  Initial_frame initial_frame(const Vec<D>& r, std::size_t minimum_points, const Neighborhood<D>& nbh) const {
     Initial_frame f;
-    if(samples_->size() < minimum_points) {
+    const std::size_t k = (std::max)(k_, minimum_points);
+    std::vector<std::size_t> idx;
+    if(samples_->size() >= minimum_points) {
+      const bool sided = !nbh.side.isZero();
+      samples_->k_nearest(r, sided ? 2 * k : k, idx);
+      if(sided) {
+        idx.erase(std::remove_if(idx.begin(), idx.end(), [&](std::size_t i) { return !nbh.on_side(*samples_, i); }),
+                  idx.end());
+        if(idx.size() > k) idx.resize(k);
+      }
+    }
+    if(idx.size() < minimum_points) {
       f.status = Projection_status::TOO_FEW_NEIGHBORS;
       return f;
     }
-    std::vector<std::size_t> idx;
-    samples_->k_nearest(r, (std::max)(k_, minimum_points), idx);
     std::vector<Vec<D>> p(idx.size());
     std::vector<double> w(idx.size());
     double dmin = std::numeric_limits<double>::infinity();
