@@ -79,8 +79,9 @@ struct Mesher_input {
   double expected_evaluations = 1e6;
   /// The mesher is stopped after this many evaluations (0: no limit): the run then fails.
   std::size_t max_evaluations = 0;
-  /// Mesh_3 with polylines: the budget of evaluations, in units of `expected_evaluations`, after
-  /// which it meshes again without them (0: none).
+  /// Mesh_3 with polylines: the budget of evaluations, in units of `expected_evaluations`, and
+  /// of vertices, in units of the expected number of vertices (`expected_evaluations` / 250),
+  /// after which it meshes again without them (0: none).
   double feature_budget = 4;
   /// The mesher is stopped after this many seconds (0: no limit): the run then fails.
   double max_seconds = 0;
@@ -421,23 +422,31 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   C3t3 c3t3;
   const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
   if(has_features) {
-    // The run with polylines gets a budget of `feature_budget` times the expected evaluations,
-    // and stops when it stalls (see `Meshing_watchdog`): Mesh_3's refinement around a protected
-    // polyline can go on without end. Then the surface is meshed again without them.
+    // The run with polylines gets a budget of `feature_budget` times the expected evaluations
+    // and vertices, and stops when it stalls (see `Meshing_watchdog`): Mesh_3's refinement
+    // around a protected polyline can go on without end, evaluating little (its manifold
+    // refinement next to polylines a few spacings apart, on a thin plate, inserted vertices for
+    // minutes at a few evaluations a second). Then the surface is meshed again without them.
     const std::size_t user_limit = monitor.limit;
     const std::size_t budget = std::size_t(in.feature_budget * monitor.expected);
     const bool budgeted = in.feature_budget > 0 && (user_limit == 0 || budget < user_limit);
     if(budgeted) monitor.limit = budget;
+    // measured: about 250 evaluations per vertex (see `Mesher_input::expected_evaluations`)
+    const std::size_t max_vertices = in.feature_budget > 0 ? std::size_t(in.feature_budget * monitor.expected / 250) + 1 : 0;
     auto watchdog = watch();
     try {
       c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
-                               params::manifold(), options);
+                               params::manifold(),
+                               params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop,
+                                                      params::maximal_number_of_vertices = max_vertices));
     } catch(const Failure_exception&) {
       report.features_dropped = true;
       has_features = false;
     }
     watchdog.reset();
-    if(((budgeted && monitor.limit_hit.load()) || monitor.stall_hit.load()) && !monitor.time_hit.load()) {
+    const bool too_many_vertices = max_vertices > 0 && c3t3.triangulation().number_of_vertices() >= max_vertices;
+    if(((budgeted && monitor.limit_hit.load()) || monitor.stall_hit.load() || too_many_vertices) &&
+       !monitor.time_hit.load()) {
       report.features_dropped = true;
       report.feature_budget_exceeded = true;
       has_features = false;
