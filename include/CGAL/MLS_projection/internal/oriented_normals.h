@@ -67,10 +67,12 @@ struct Oriented_normals_report {
 ///    `mst_orient_normals`, it orients across creases (where the normals are orthogonal) and across
 ///    thin plates (whose two sides have opposite normals along an edge parallel to them).
 /// 3. Each tree is turned outward as a whole: its normals are flipped when
-///    \f$\sum_i (p_i - c) \cdot n_i < 0\f$, with \f$c\f$ the centroid of the input (for a closed surface,
-///    the sum is proportional to \f$\oint (x - c) \cdot n\, dA = 3V > 0\f$ whatever \f$c\f$; for an
-///    open patch it orients it away from the centroid). Trees of one point are oriented away from
-///    the centroid (the fall-back).
+///    \f$\sum_i (p_i - c) \cdot n_i < 0\f$, with \f$c\f$ the centroid of the tree (for a closed surface,
+///    the sum is proportional to \f$\oint (x - c) \cdot n\, dA = 3V > 0\f$ whatever \f$c\f$, but the
+///    sampled sum is not: with \f$c\f$ far away, the small residue of \f$\sum_i n_i\f$ times the
+///    distance outweighs it, as for two spheres \f$10^5\f$ apart and the centroid of both; for an
+///    open patch, it orients it away from its centroid: outward for a convex cap). Trees of one
+///    point are oriented away from the centroid of the input (the fall-back).
 ///
 /// `progress` (may be empty) receives fractions in [0, 1]; returning `false` cancels
 /// (`completed` is then `false` and `normals` is left empty).
@@ -189,13 +191,14 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   }
   std::vector<int> sign(n, 0);
   std::vector<std::uint32_t> tree_of(n), stack;
-  std::vector<double> outwardness; // per tree: sum of (p - c) . n
+  std::vector<double> outwardness; // per tree: sum of (p - c) . n, c the tree's centroid
   std::vector<std::size_t> tree_size;
   for(std::size_t root = 0; root < n; ++root) {
     if(sign[root] != 0) continue;
     const auto t = std::uint32_t(outwardness.size());
     outwardness.push_back(0.);
     tree_size.push_back(0);
+    Vec<3> point_sum = Vec<3>::Zero(), normal_sum = Vec<3>::Zero();
     sign[root] = 1;
     stack.assign(1, std::uint32_t(root));
     while(!stack.empty()) {
@@ -204,12 +207,15 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
       tree_of[i] = t;
       ++tree_size[t];
       outwardness[t] += sign[i] * p[i].dot(m[i]);
+      point_sum += p[i];
+      normal_sum += sign[i] * m[i];
       for(const auto& [j, flips] : forest[i])
         if(sign[j] == 0) {
           sign[j] = flips ? -sign[i] : sign[i];
           stack.push_back(j);
         }
     }
+    outwardness[t] -= (point_sum / double(tree_size[t])).dot(normal_sum);
   }
   if(!step(0.95)) return report;
 
