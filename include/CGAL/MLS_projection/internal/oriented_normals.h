@@ -99,7 +99,7 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
     return true;
   };
 
-  // centroid, for the replacement of null normals and the orientation of each tree
+  // centroid: the origin of the local coordinates below, for null normals and the fall-back
   double cx = 0, cy = 0, cz = 0;
   for(const Point& p : points) {
     cx += CGAL::to_double(p.x());
