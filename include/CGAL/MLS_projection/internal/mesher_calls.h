@@ -424,9 +424,10 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   if(has_features) {
     // The run with polylines gets a budget of `feature_budget` times the expected evaluations
     // and vertices, and stops when it stalls (see `Meshing_watchdog`): Mesh_3's refinement
-    // around a protected polyline can go on without end, evaluating little (its manifold
-    // refinement next to polylines a few spacings apart, on a thin plate, inserted vertices for
-    // minutes at a few evaluations a second). Then the surface is meshed again without them.
+    // around a protected polyline can go on without end, evaluating little (on a plate 3
+    // spacings thick, its manifold refinement kept inserting vertices for more than 5 minutes,
+    // neither stalled nor over the budget of evaluations). Then the surface is meshed again
+    // without them.
     const std::size_t user_limit = monitor.limit;
     const std::size_t budget = std::size_t(in.feature_budget * monitor.expected);
     const bool budgeted = in.feature_budget > 0 && (user_limit == 0 || budget < user_limit);
