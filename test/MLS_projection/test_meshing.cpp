@@ -30,6 +30,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -649,6 +650,34 @@ MLS_TEST(feature_budget_drops_features) {
     // 1 - cos(pi / 48) = 2.1e-3 inside the sphere
     check_closed_mesh(c, 2, 2.5e-3);
   }
+}
+
+// Mesh_3 slowing down to a small fraction of its pace is stopped as stalled, although it still
+// evaluates: on the unit sphere at facet size 0.03 (about 2 10^6 evaluations), each evaluation
+// takes 20 microseconds for the first 2 s, then 20 ms (50 per second, against some 10^4
+// before). Without the watchdog's pace rule, the run would end at its time limit of 60 s.
+MLS_TEST(slowed_down_mesher_stalls) {
+  using Clock = std::chrono::steady_clock;
+  std::optional<Clock::time_point> first;
+  CGAL::MLS::internal::Mesher_input<K> in;
+  in.function = [&first](const Point& p) {
+    const auto now = Clock::now();
+    if(!first) first = now;
+    if(now - *first > std::chrono::seconds(2)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    while(Clock::now() - now < std::chrono::microseconds(20)) {
+    }
+    return std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1.;
+  };
+  in.bounding_sphere = K::Sphere_3(CGAL::ORIGIN, 4.);
+  in.inner_point = CGAL::ORIGIN;
+  in.facet_size = 0.03;
+  in.facet_distance = 0.002;
+  in.max_seconds = 60;
+  Mesh m;
+  const auto r = CGAL::MLS::internal::mesh_with_mesh_3<CGAL::Sequential_tag>(in, m);
+  std::cout << "  " << r.evaluations << " evaluations: " << r.message << std::endl;
+  MLS_CHECK(!r.success && num_faces(m) == 0);
+  MLS_CHECK(std::string(r.message).find("stalled") != std::string::npos);
 }
 
 // Cancellation: a callback returning false during the seeds, or during the meshing, makes the

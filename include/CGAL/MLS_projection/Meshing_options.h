@@ -169,9 +169,10 @@ struct Meshing_options {
   std::size_t max_evaluations = 0;
   /// Mesh_3 with the feature polylines is stopped after this many times the expected number of
   /// evaluations (see `max_evaluations`) or of vertices (\f$n\,(s/\mathrm{size})^2\f$), or as
-  /// soon as it stalls (no new evaluation of the function for 5 seconds and a quarter of the
-  /// meshing time): its manifold refinement next to a protected polyline can loop without end,
-  /// evaluating little or nothing. The surface is then meshed again without them
+  /// soon as it stalls (over the last 5 seconds and quarter of the meshing time, it evaluated the
+  /// function at less than a tenth of its fastest pace over one second): its manifold refinement
+  /// next to a protected polyline can loop without end, evaluating little or nothing, or slow
+  /// down more and more. The surface is then meshed again without them
   /// (`Meshing_report::feature_budget_exceeded`). 0: no budget (the stall is still detected).
   double feature_evaluation_budget = 4;
   /// The mesher is stopped, and the reconstruction fails ("the mesher did not finish within the

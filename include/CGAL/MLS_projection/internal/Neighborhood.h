@@ -13,6 +13,10 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
+/// The cosine below which a sample's normal is on the other side than `side` (120 degrees; why
+/// not lower: the manual's "Thin parts").
+constexpr double other_side_cosine = -0.5;
+
 /// The side of a query at `r` (`Neighborhood::side`) in a sample set with normals: the direction
 /// of the sum of the normals of the 6 input points nearest to `r` (a vote, so that one wrong
 /// normal does not turn a query to the other side), or zero when they cancel.
@@ -30,8 +34,8 @@ Vec<D> side_at(const Samples& samples, const Vec<D>& r) {
 /// An energy whose weights vanish beyond the support radius `s` of the weight function
 /// is computed exactly from this set for every frame origin `q` with
 /// `|q - centre| + s <= radius` (see `covers()`); operators gather again when `q` leaves it.
-/// With a nonzero `side` (a unit normal) and input normals, the points whose normal makes more
-/// than 120 degrees with `side` are left out (`Projection_options::one_sided`).
+/// With a nonzero `side` (a unit normal) and input normals, the points whose normal is on the
+/// other side (`other_side_cosine`) are left out (`Projection_options::one_sided`).
 template <int D>
 struct Neighborhood {
   std::vector<std::size_t> indices;
@@ -43,7 +47,7 @@ struct Neighborhood {
   /// Whether the input point of index `i` is on this neighbourhood's side.
   template <class Samples>
   bool on_side(const Samples& samples, std::size_t i) const {
-    return !samples.has_normals() || !(samples.local_normal(i).dot(side) < -0.5);
+    return !samples.has_normals() || !(samples.local_normal(i).dot(side) < other_side_cosine);
   }
 
   template <class Samples>

@@ -28,6 +28,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -148,7 +149,7 @@ inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& 
   if(monitor.limit_hit.load()) {
     report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
   } else if(monitor.stall_hit.load()) {
-    report.message = "the mesher stalled (Mesh_3 refined without progress)";
+    report.message = "the mesher stalled (Mesh_3 slowed down to less than a tenth of its pace)";
   } else if(monitor.time_hit.load()) {
     report.message = "the mesher did not finish within the time limit (Meshing_options::max_meshing_seconds)";
   } else {
@@ -159,12 +160,13 @@ inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& 
 }
 
 // Sets the monitor's stop flag after `seconds` of meshing (no limit when `seconds` is not
-// positive), or when the mesher has stalled (with `stall_detection`): no new evaluation of the
-// function for 5 seconds and a quarter of the time spent, unless destroyed before. The meshers
-// poll the flag in their loops. Mesh_3's manifold refinement next to protected polylines can loop
-// without end on a point hidden by a protecting ball ("the facet is not in the conflict zone"),
-// re-examining the same facets without evaluating anything new; its other stages evaluate the
-// function all along.
+// positive), or when the mesher has stalled (with `stall_detection`): over the last 5 seconds
+// and quarter of the time spent, it evaluated the function at less than a tenth of its fastest
+// pace over one second (none at all, often), unless destroyed before. The meshers poll the flag
+// in their loops. Next to protected polylines, Mesh_3's manifold refinement can loop without end
+// on a point hidden by a protecting ball ("the facet is not in the conflict zone"), evaluating
+// nothing new, or slow down as the vertices there gain thousands of incident facets (its test of
+// a vertex's manifoldness walks all of them). Healthy runs measured kept more than half their pace.
 class Meshing_watchdog {
 public:
   Meshing_watchdog(Evaluation_monitor& monitor, double seconds, bool stall_detection) {
@@ -173,8 +175,9 @@ public:
     thread_ = std::thread([this, &monitor, seconds, timed, stall_detection] {
       using Clock = std::chrono::steady_clock;
       const auto start = Clock::now();
-      auto last_change = start;
-      std::size_t last_count = monitor.count.load();
+      // the counts polled, with their times since the start
+      std::vector<std::pair<double, std::size_t>> history{{0., monitor.count.load()}};
+      double peak = 0; // evaluations per second, over one second at least
       std::unique_lock<std::mutex> lock(mutex_);
       // polled every 0.1 s, or at the time limit when sooner
       const auto poll = [&] {
@@ -182,18 +185,23 @@ public:
         if(timed) wait = (std::min)(wait, (std::max)(0., seconds - std::chrono::duration<double>(Clock::now() - start).count()));
         return std::chrono::duration<double>(wait);
       };
+      // the last count polled at least `ago` seconds before `elapsed`
+      const auto count_before = [&](double elapsed, double ago) {
+        auto it = std::upper_bound(history.begin(), history.end(), elapsed - ago,
+                                   [](double t, const std::pair<double, std::size_t>& h) { return t < h.first; });
+        return it == history.begin() ? history.front() : *(it - 1);
+      };
       while(!done_cv_.wait_for(lock, poll(), [this] { return done_; })) {
-        const auto now = Clock::now();
-        const double elapsed = std::chrono::duration<double>(now - start).count();
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         const std::size_t count = monitor.count.load();
-        if(count != last_count) {
-          last_count = count;
-          last_change = now;
-        }
-        const double idle = std::chrono::duration<double>(now - last_change).count();
+        history.emplace_back(elapsed, count);
+        const auto second = count_before(elapsed, 1.);
+        if(elapsed - second.first >= 1.) peak = (std::max)(peak, double(count - second.second) / (elapsed - second.first));
+        const double window = (std::max)(5., 0.25 * elapsed);
+        const auto earlier = count_before(elapsed, window);
         if(timed && elapsed >= seconds) {
           monitor.time_hit.store(true);
-        } else if(stall_detection && idle > (std::max)(5., 0.25 * elapsed)) {
+        } else if(stall_detection && elapsed >= window && double(count - earlier.second) <= 0.1 * peak * (elapsed - earlier.first)) {
           monitor.stall_hit.store(true);
         } else {
           continue;
