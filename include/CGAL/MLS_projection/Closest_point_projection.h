@@ -246,7 +246,7 @@ protected:
     // order 1, whatever the scale of the input).
     const V rs = r / h;
     Neighborhood<D> nbh, unit, race_ball;
-    nbh.side = this->side_at(r);
+    this->set_side(nbh, r);
     const Neighborhood<D>* fitted = &unit; // the points the fit was made on: `unit` or `race_ball`
     double bound = 0; // P_U(r) may not move further from r than this (units of h)
     int iterations = 0;

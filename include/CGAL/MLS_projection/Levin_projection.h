@@ -143,7 +143,7 @@ public:
     const Vec r = this->samples().to_local(query);
     if(!r.allFinite()) return this->failure(query, Projection_status::INVALID_QUERY);
     thread_local internal::Neighborhood<D> nbh;
-    nbh.side = this->side_at(r);
+    this->set_side(nbh, r);
     Frame frame = find_frame(r, nbh);
     if(frame.status != Projection_status::CONVERGED) return this->failure(query, frame.status);
 

@@ -498,8 +498,10 @@ private:
     d.projection.samples().in_ball(P, 2 * d.h, idx);
     for(std::size_t i : idx) {
       const V& n = d.sample_normals[i];
-      if(!(n.squaredNorm() > 0.25) || n.dot(side) < internal::other_side_cosine) continue;
       const V& q = d.projection.samples().local_point(i);
+      if(!(n.squaredNorm() > 0.25) ||
+         (n.dot(side) < internal::other_side_cosine && (q - P).dot(side) < -internal::other_side_depth * d.h))
+        continue;
       test(V(q + 0.5 * d.h * n), 1);
       test(V(q - 0.5 * d.h * n), -1);
     }

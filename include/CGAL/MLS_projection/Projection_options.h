@@ -37,10 +37,11 @@ struct Projection_options {
   bool warm_starts = true;
   /// Whether each projection weighs only the input points on its query's side of a thin part:
   /// with input normals, the points whose normal makes more than \f$120^\circ\f$ with the sum of
-  /// the normals of the 6 input points nearest to the query are left out (the other side of a
-  /// plate or blade a few spacings thick, which would pull the fit to its middle). No effect
-  /// without input normals. Off by default: it also leaves out the other face of a crease
-  /// sharper than \f$60^\circ\f$. `mls_surface_reconstruction()` turns it on.
+  /// the normals of the 6 input points nearest to the query, and which lie more than \f$h/4\f$
+  /// behind the fit's origin along it, are left out (the other side of a plate or blade a few
+  /// spacings thick, which would pull the fit to its middle). No effect without input normals.
+  /// Off by default: it also leaves out the other face of a convex crease sharper than
+  /// \f$60^\circ\f$. `mls_surface_reconstruction()` turns it on.
   bool one_sided = false;
 };
 

@@ -13,9 +13,11 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
-/// The cosine below which a sample's normal is on the other side than `side` (120 degrees; why
-/// not lower: the manual's "Thin parts").
+/// A sample is on the other side than `side` when its normal makes more than 120 degrees with it
+/// and it lies more than a quarter of h behind the reference point (the manual's "Thin parts":
+/// the normal alone drops a face of noisy concave creases).
 constexpr double other_side_cosine = -0.5;
+constexpr double other_side_depth = 0.25; // in units of h
 
 /// The side of a query at `r` (`Neighborhood::side`) in a sample set with normals: the direction
 /// of the sum of the normals of the 6 input points nearest to `r` (a vote, so that one wrong
@@ -34,8 +36,8 @@ Vec<D> side_at(const Samples& samples, const Vec<D>& r) {
 /// An energy whose weights vanish beyond the support radius `s` of the weight function
 /// is computed exactly from this set for every frame origin `q` with
 /// `|q - centre| + s <= radius` (see `covers()`); operators gather again when `q` leaves it.
-/// With a nonzero `side` (a unit normal) and input normals, the points whose normal is on the
-/// other side (`other_side_cosine`) are left out (`Projection_options::one_sided`).
+/// With a nonzero `side` (a unit normal) and input normals, the points on the other side of the
+/// centre (`on_side()`) are left out (`Projection_options::one_sided`).
 template <int D>
 struct Neighborhood {
   std::vector<std::size_t> indices;
@@ -43,11 +45,13 @@ struct Neighborhood {
   Vec<D> centre = Vec<D>::Zero();
   double radius = 0;
   Vec<D> side = Vec<D>::Zero();
+  double depth = 0; // `other_side_depth` in input units
 
-  /// Whether the input point of index `i` is on this neighbourhood's side.
+  /// Whether the input point of index `i` is on this neighbourhood's side, seen from `ref`.
   template <class Samples>
-  bool on_side(const Samples& samples, std::size_t i) const {
-    return !samples.has_normals() || !(samples.local_normal(i).dot(side) < other_side_cosine);
+  bool on_side(const Samples& samples, std::size_t i, const Vec<D>& ref) const {
+    return !samples.has_normals() || !(samples.local_normal(i).dot(side) < other_side_cosine) ||
+           !((samples.local_point(i) - ref).dot(side) < -depth);
   }
 
   template <class Samples>
@@ -57,7 +61,7 @@ struct Neighborhood {
     indices.clear();
     points.clear();
     samples.for_each_in_ball(c, r, [&](std::size_t i, const Vec<D>& p) {
-      if(!on_side(samples, i)) return;
+      if(!on_side(samples, i, c)) return;
       indices.push_back(i);
       points.push_back(p);
     });
@@ -71,6 +75,7 @@ struct Neighborhood {
     ball.centre = c;
     ball.radius = r;
     ball.side = side;
+    ball.depth = depth;
     for(std::size_t i = 0; i < points.size(); ++i) {
       if((points[i] - c).squaredNorm() > r * r) continue;
       ball.indices.push_back(indices[i]);

@@ -73,10 +73,12 @@ protected:
     return Weight_function::polynomial_support;
   }
 
-  /// The side of a query at `r` (`internal::side_at()`) with `Projection_options::one_sided` and
-  /// input normals, else zero (no side).
-  Vec<D> side_at(const Vec<D>& r) const {
-    return options_.one_sided && samples_->has_normals() ? internal::side_at<D>(*samples_, r) : Vec<D>(Vec<D>::Zero());
+  /// Sets the side of `nbh` for a query at `r` (`internal::side_at()`) with
+  /// `Projection_options::one_sided` and input normals, else none.
+  void set_side(Neighborhood<D>& nbh, const Vec<D>& r) const {
+    const bool sided = options_.one_sided && samples_->has_normals();
+    nbh.side = sided ? internal::side_at<D>(*samples_, r) : Vec<D>(Vec<D>::Zero());
+    nbh.depth = other_side_depth * h_;
   }
 
   struct Initial_frame {
@@ -96,7 +98,7 @@ protected:
       const bool sided = !nbh.side.isZero();
       samples_->k_nearest(r, sided ? 2 * k : k, idx);
       if(sided) {
-        idx.erase(std::remove_if(idx.begin(), idx.end(), [&](std::size_t i) { return !nbh.on_side(*samples_, i); }),
+        idx.erase(std::remove_if(idx.begin(), idx.end(), [&](std::size_t i) { return !nbh.on_side(*samples_, i, r); }),
                   idx.end());
         if(idx.size() > k) idx.resize(k);
       }
