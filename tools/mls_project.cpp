@@ -203,7 +203,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
     << ".\n"
        "A --space that the operator cannot use is a command-line error.\n"
        "Cost per query in 3D, one thread: levin some 20 microseconds; the closest-point operators\n"
-       "(single, enriched, unified) some 0.3 ms continuing from the previous query's fit, 1 ms alone\n"
+       "(single, enriched, unified) 0.15 to 0.3 ms continuing from the previous query's fit, 1 ms alone\n"
        "(--no-warm-starts); mixed costs levin's on smooth parts and the wedge fit's near creases.\n"
        "\n"
        "Features (--features F): one line per projected point that lies on a crease or an apex of its\n"

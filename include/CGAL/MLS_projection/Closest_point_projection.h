@@ -107,7 +107,8 @@ struct has_closest_points<S, std::void_t<decltype(std::declval<const S&>().close
 ///
 /// With a `Warm_start`, a projection first continues the final fit of the last one (a nearby
 /// query's, the paper's section 6) and keeps it when it converges, is supported by the data and
-/// fits it nearly as well (energy at most `warm_energy_factor` times the last one's); otherwise it is
+/// fits it nearly as well (energy at most `warm_energy_factor` times the last one's, or below
+/// `warm_energy_floor`: an RMS residual of \f$h/100\f$); otherwise it is
 /// tried once more with the last fit's frame origin moved to \f$C_0\f$, the closest point of the
 /// query on the last fit, then the starts above run. A continued fit needs neither Levin's frame
 /// nor the whole gathered ball: its neighbourhood is the support around \f$C_0\f$, plus \f$h/2\f$,
@@ -222,8 +223,9 @@ public:
   /// projection made with `warm` (the paper's section 6), which should be of a nearby query, then
   /// stores this projection's fit in `warm`. The continued fit is kept when it converges, is
   /// supported by the data and its energy is at most `warm_energy_factor` times the last one's
-  /// (the same neighbourhood fitted as well); otherwise, after a second try from the last fit moved
-  /// to the query (see the class), the query is projected as by `project(query)`.
+  /// (the same neighbourhood fitted as well) or below `warm_energy_floor`; otherwise, after a
+  /// second try from the last fit moved to the query (see the class), the query is projected as
+  /// by `project(query)`.
   /// `project_points()` orders its queries along a Hilbert curve for this.
   Result project(const Point& query, Warm_start& warm) const { return project_impl(query, &warm); }
 
@@ -232,6 +234,11 @@ public:
 
   /// The largest ratio of a warm-started fit's energy to the last fit's at which it is kept.
   static constexpr double warm_energy_factor = 1.5;
+  /// The energy (units of \f$h^2\f$) below which a warm-started fit is kept whatever the last
+  /// fit's: an RMS residual of \f$h/100\f$, the noiseless threshold of `Mixed_projection`'s
+  /// screening: the ratio alone rejects nearly exact fits (faceted or curved data next to a
+  /// crease) for rises of the energy far below the data's resolution.
+  static constexpr double warm_energy_floor = 1e-4;
 
 protected:
   Result project_impl(const Point& query, Warm_start* warm) const {
@@ -333,7 +340,7 @@ protected:
   Fit continued(const V& rs, const Fit& last, const Neighborhood<D>& unit, double bound, int& iterations) const {
     Fit fit = minimize(rs, last.frame, last.c, unit, bound, 0, warm_window, warm_window);
     iterations += fit.iterations;
-    if(!fit.valid || !fit.converged || !(fit.energy <= warm_energy_factor * last.energy + exact_value))
+    if(!fit.valid || !fit.converged || !(fit.energy <= (std::max)(warm_energy_factor * last.energy, warm_energy_floor)))
       return Fit();
     fit.supported = is_supported(fit, unit);
     return fit.supported ? fit : Fit();
