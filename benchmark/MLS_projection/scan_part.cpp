@@ -7,7 +7,8 @@
 //       N points drawn uniformly by area on the triangle mesh, plus isotropic Gaussian noise of
 //       standard deviation NOISE times the diagonal of the mesh's bounding box on each
 //       coordinate, written as "x y z" lines (no normals, as a scanner delivers them).
-//       Deterministic: the same arguments give the same points on every machine.
+//       Deterministic: the same arguments give the same points on every machine, whatever the
+//       order of the mesh's faces.
 //   scan_part distance MESH.off POINTS
 //       The distances of the points of POINTS (.xyz lines, or the vertices of an .off mesh) to
 //       the mesh, as fractions of the diagonal: one line "rms R max M p99 P n N".
@@ -111,16 +112,21 @@ std::vector<Point> read_points(const std::string& file) {
 int sample(const std::string& file, std::size_t n, double noise, std::uint64_t seed, const std::string& out_file) {
   const Mesh mesh = read_mesh(file);
   const double sigma = noise * diagonal(mesh);
-  std::vector<double> area;
+  // The triangles in a canonical order (each from its smallest vertex, then sorted): OpenSCAD
+  // writes the same faces in another order from one export to the next.
   std::vector<std::array<Point, 3>> triangles;
-  double total = 0;
   for(const auto f : mesh.faces()) {
     const auto h = mesh.halfedge(f);
-    const std::array<Point, 3> t = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
-                                    mesh.point(mesh.target(mesh.next(h)))};
+    std::array<Point, 3> t = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)), mesh.point(mesh.target(mesh.next(h)))};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    triangles.push_back(t);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  std::vector<double> area;
+  double total = 0;
+  for(const auto& t : triangles) {
     total += std::sqrt(CGAL::squared_area(t[0], t[1], t[2]));
     area.push_back(total);
-    triangles.push_back(t);
   }
   Random rng(seed);
   std::ofstream out(out_file);
