@@ -20,6 +20,7 @@ part's mesh as fractions of its bounding-box diagonal (RMS and maximum).
 """
 
 import argparse
+import math
 import os
 import re
 import statistics
@@ -255,26 +256,33 @@ def main():
               statistics.median(r["per_query"] / (r["PCL"] / args.points) for r in rows)))
 
     if args.scale:
+        # The noise levels scaled by sqrt(points / scale): the same noise in spacings as at
+        # --points, so that the two sizes are the same regime and their times compare.
         part = args.parts.split(",")[0]
         mesh = export_part(part, work)
-        d = os.path.join(work, "%s_scale" % part)
-        os.makedirs(d, exist_ok=True)
-        scan = os.path.join(d, "scan.xyz")
-        subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), "0.002", "1", scan], check=True)
-        spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
-        log("%s, %d points, noise 0.002" % (part, args.scale))
-        pcl, pcl_memory = run([tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(4 * spacing), "1"])
-        ours, memory = run([tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default.xyz"),
-                            "--threads", "1", "--quiet"])
-        small = statistics.median(r["default"] for r in rows if r["part"] == part and r["noise"] == 0.002)
-        print("\n## Scale: %d points of %s at noise 0.002, one thread, one run\n" % (args.scale, part))
-        print("| | PCL | default |\n|---|---|---|")
-        print("| time (s) | %.1f | %.1f |" % (pcl, ours))
-        print("| peak memory per input point (bytes) | %.0f | %.0f |" % (
-            pcl_memory * 1024. / args.scale, memory * 1024. / args.scale))
-        print("\ndefault / PCL %.2f; default at %d points / at %d points %.1f (linear: %.1f)" % (
-            ours / pcl, args.scale, args.points, ours / small, args.scale / args.points))
-
+        print("\n## Scale: %d points of %s, one thread, one run\n" % (args.scale, part))
+        print("| noise at %d points | noise at %d points | PCL s | default s | default / PCL | "
+              "default at %d / at %d points (linear: %.1f) | PCL bytes per point | default bytes per point | "
+              "RMS PCL | RMS default | max PCL | max default |"
+              % (args.points, args.scale, args.scale, args.points, args.scale / args.points))
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for noise in args.noise.split(","):
+            scaled = float(noise) * math.sqrt(args.points / args.scale)
+            d = os.path.join(work, "%s_scale_n%s" % (part, noise))
+            os.makedirs(d, exist_ok=True)
+            scan = os.path.join(d, "scan.xyz")
+            subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), repr(scaled), "1", scan], check=True)
+            spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
+            log("%s, %d points, noise %g" % (part, args.scale, scaled))
+            pcl, pcl_memory = run([tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(4 * spacing), "1"])
+            ours, memory = run([tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default.xyz"),
+                                "--threads", "1", "--quiet"])
+            small = statistics.median(r["default"] for r in rows if r["part"] == part and r["noise"] == float(noise))
+            pcl_rms, pcl_max = distances(tools, mesh, os.path.join(d, "pcl.xyz"))
+            rms, worst = distances(tools, mesh, os.path.join(d, "default.xyz"))
+            print("| %s | %.2g | %.1f | %.1f | %.2f | %.1f | %.0f | %.0f | %.2e | %.2e | %.2e | %.2e |" % (
+                noise, scaled, pcl, ours, ours / pcl, ours / small,
+                pcl_memory * 1024. / args.scale, memory * 1024. / args.scale, pcl_rms, rms, pcl_max, worst))
 
 if __name__ == "__main__":
     main()
