@@ -492,9 +492,9 @@ std::vector<Point> thin_plate(CGAL::Random& random, double t, double spacing, st
 // Orientation without normals on a plate 2.5 spacings thick (10 x 10 x 0.5, spacing 0.2):
 // the PCA normals of its two sides are parallel, and an orientation that compares normals
 // (mst_orient_normals) gives one whole side the other's orientation (measured: 2804 of 5499
-// points wrong). Along the spanning forest with the reflection criterion, at most 0.1% of the
-// normals may point inward (n . truth < -1/2; measured 1 here, at most 1 over 8 seeds), and at
-// most 1% may be no better than tangent (n . truth <= 0; measured 7, at most 26 over 8 seeds):
+// points wrong). Along the spanning forest with the reflection criterion and the votes, at most
+// 0.1% of the normals may point inward (n . truth < -1/2; measured 0 over 8 seeds), and at most
+// 0.5% may be no better than tangent (n . truth <= 0; measured 9 here, at most 13 over 8 seeds):
 // those are PCA normals of random neighbourhoods that reach the other face, wrong before any
 // orientation.
 MLS_TEST(thin_plate_normals_oriented_outward) {
@@ -513,7 +513,45 @@ MLS_TEST(thin_plate_normals_oriented_outward) {
   std::cout << "  plate 2.5 spacings thick: " << inward << " of " << p.size() << " normals inward, " << not_outward
             << " not outward (" << r.components << " trees)" << std::endl;
   MLS_CHECK_LE(double(inward), 0.001 * double(p.size()));
-  MLS_CHECK_LE(double(not_outward), 0.01 * double(p.size()));
+  MLS_CHECK_LE(double(not_outward), 0.005 * double(p.size()));
+}
+
+// Orientation without normals on a biconvex lens with a knife edge (rim radius 5, 1 thick at the
+// centre, faces meeting at 23 degrees, spacing 0.2, 3966 points, 3 samplings). Near the rim, the
+// two faces lie within a spacing of each other and share their PCA normal, and the spanning tree,
+// as on a flat sheet, joins them there with the same orientation: without the votes of the space
+// around the points, one whole face ended inside out (measured: 1168 to 1190 wrong normals where
+// the lens is thicker than 2 spacings). With them, where the lens is thicker than 2 spacings at
+// most 0.25% of the normals may be wrong (measured 1 to 4 over 8 samplings); in all, where the
+// band thinner than a spacing (about a fifth of the points) goes with one face or the other, at
+// most 7.5% (measured 4.8% to 6.2%).
+MLS_TEST(knife_edge_lens_normals_oriented_outward) {
+  const double a = 5, t = 0.5, spacing = 0.2, R = (a * a + t * t) / (2 * t), c = R - t;
+  for(unsigned int seed = 1; seed <= 3; ++seed) {
+    CGAL::Random random(seed);
+    std::vector<Point> p;
+    std::vector<Vector> truth;
+    std::vector<bool> thick; // where the lens is thicker than 2 spacings
+    for(int i = 0, n = int(4 * CGAL_PI * R * t / (spacing * spacing)); i < n; ++i) {
+      const double s = random.get_bool() ? 1. : -1., z = random.get_double(c, R), phi = random.get_double(0, 2 * CGAL_PI);
+      const double rho = std::sqrt(R * R - z * z); // area-uniform on the cap of the sphere centred at (0, 0, -s c)
+      p.emplace_back(rho * std::cos(phi), rho * std::sin(phi), s * (z - c));
+      truth.push_back(Vector(rho * std::cos(phi), rho * std::sin(phi), s * z) / R);
+      thick.push_back(2 * (z - c) > 2 * spacing);
+    }
+    std::vector<Vector> n;
+    const auto r = CGAL::MLS::internal::estimate_oriented_normals<CGAL::Sequential_tag, K>(p, n, 18);
+    MLS_CHECK(r.completed && n.size() == p.size());
+    std::size_t wrong = 0, wrong_thick = 0;
+    for(std::size_t i = 0; i < p.size() && i < n.size(); ++i) {
+      wrong += n[i] * truth[i] <= 0;
+      wrong_thick += thick[i] && n[i] * truth[i] <= 0;
+    }
+    std::cout << "  knife-edge lens, sampling " << seed << ": " << wrong << " of " << p.size() << " normals not outward, "
+              << wrong_thick << " where thicker than 2 spacings" << std::endl;
+    MLS_CHECK_LE(double(wrong_thick), 0.0025 * double(p.size()));
+    MLS_CHECK_LE(double(wrong), 0.075 * double(p.size()));
+  }
 }
 
 // The implicit function across the same plate (normals estimated as above, mixed operator):

@@ -3,19 +3,19 @@
 //
 // A consistently oriented normal field on a point set, for the sign of the implicit function:
 // the input normals when there are some, otherwise normals estimated with CGAL's
-// pca_estimate_normals and oriented along a minimum spanning forest of the neighbour graph.
+// pca_estimate_normals and oriented along a minimum spanning forest of the neighbour graph, with
+// the votes of the free space around the points.
 
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 #define CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 
 #include <CGAL/MLS_projection/internal/Dimension.h>
 #include <CGAL/MLS_projection/internal/Point_tree.h>
+#include <CGAL/MLS_projection/internal/outside_votes.h>
 
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
-
-#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +41,7 @@ struct Oriented_normals_report {
   std::size_t replaced = 0;
   /// Trees of the spanning forest (the connected parts of the neighbour graph).
   std::size_t components = 0;
-  /// Trees turned over by the outwardness test (step 3).
+  /// Trees turned over by their votes or by the outwardness test (step 4).
   std::size_t flipped_components = 0;
   /// `false` when cancelled by the callback.
   bool completed = true;
@@ -54,7 +54,9 @@ struct Oriented_normals_report {
 ///    for which a plane fit suffices; CGAL 5.5's `jet_estimate_normals` crashes on neighbourhoods
 ///    of coincident points); a normal that is not finite (coincident or collinear neighbours)
 ///    is replaced by the direction from the centroid.
-/// 2. Propagation along a minimum spanning forest of the graph joining each point to its `k`
+/// 2. Votes of the space around the points (`outside_votes()`): +1 or -1 where the free space
+///    along the normal's two directions tells the outside from the inside, 0 where it does not.
+/// 3. Propagation along a minimum spanning forest of the graph joining each point to its `k`
 ///    nearest neighbours (edges at most twice as long as the shorter of the two points' distance
 ///    to their `k`-th neighbour, so that far outliers and separate objects are not joined). Along
 ///    an edge \f$e\f$ from \f$p_i\f$ to \f$p_j\f$, \f$n_j\f$ agrees with \f$n_i\f$ when
@@ -66,13 +68,18 @@ struct Oriented_normals_report {
 ///    decide. Unlike the criterion \f$n_i \cdot n_j > 0\f$ of
 ///    `mst_orient_normals`, it orients across creases (where the normals are orthogonal) and across
 ///    thin plates (whose two sides have opposite normals along an edge parallel to them).
-/// 3. Each tree is turned outward as a whole: its normals are flipped when
-///    \f$\sum_i (p_i - c) \cdot n_i < 0\f$, with \f$c\f$ the centroid of the tree (for a closed surface,
-///    the sum is proportional to \f$\oint (x - c) \cdot n\, dA = 3V > 0\f$ whatever \f$c\f$, but the
-///    sampled sum is not: with \f$c\f$ far away, the small residue of \f$\sum_i n_i\f$ times the
-///    distance outweighs it, as for two spheres \f$10^5\f$ apart and the centroid of both; for an
-///    open patch, it orients it away from its centroid: outward for a convex cap). Trees of one
-///    point are oriented away from the centroid of the input (the fall-back).
+///    Kruskal's algorithm skips the edges that would join two parts of the forest whose sums of
+///    votes, oriented along the edge, have opposite signs: near a knife edge, where the two faces
+///    lie within a spacing of each other and share their PCA normal, an edge along the surface
+///    joins the two faces as if they were one sheet, and would turn one of them inside out.
+/// 4. Each tree is turned outward as a whole: by the sign of the sum of its votes, or where that
+///    is 0, by \f$\sum_i (p_i - c) \cdot n_i\f$, with \f$c\f$ the centroid of the tree (for a
+///    closed surface, the sum is proportional to \f$\oint (x - c) \cdot n\, dA = 3V > 0\f$ whatever
+///    \f$c\f$, but the sampled sum is not: with \f$c\f$ far away, the small residue of
+///    \f$\sum_i n_i\f$ times the distance outweighs it, as for two spheres \f$10^5\f$ apart and the
+///    centroid of both; for an open patch, it orients it away from its centroid: outward for a
+///    convex cap). Trees of one point are oriented away from the centroid of the input (the
+///    fall-back).
 ///
 /// `progress` (may be empty) receives fractions in [0, 1]; returning `false` cancels
 /// (`completed` is then `false` and `normals` is left empty).
@@ -142,17 +149,17 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
     m[i] = Vec<3>(CGAL::to_double(it.second.x()), CGAL::to_double(it.second.y()), CGAL::to_double(it.second.z()));
   }
 
-  // 2. the graph's edges, by increasing weight (ties by index: deterministic)
+  // 3. the graph's edges, by increasing weight (ties by index: deterministic)
   struct Edge {
     float weight;
     std::uint32_t i, j;
     bool flips;
   };
   std::vector<Edge> edges;
+  std::vector<double> reach(n); // squared distance to the k-th neighbour
   {
     const Point_tree<3> tree(p);
     std::vector<std::pair<double, std::size_t>> near;
-    std::vector<double> reach(n); // squared distance to the k-th neighbour
     for(std::size_t i = 0; i < n; ++i) {
       tree.k_nearest(p[i], std::size_t(k) + 1, near); // the point itself comes first
       reach[i] = near.empty() ? 0. : near.back().first;
@@ -177,26 +184,70 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   });
   if(!step(0.6)) return report;
 
-  // Kruskal's spanning forest, then a traversal of each tree from its smallest index
-  std::vector<std::size_t> rank(n), parent(n);
-  boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
-  for(std::size_t i = 0; i < n; ++i) sets.make_set(i);
+  // 2. the votes (after the edges: they take the spacing from the median distance r to the k-th
+  // neighbour, pi r^2 = k spacing^2 on a surface)
+  std::vector<std::int8_t> votes;
+  {
+    std::vector<double> r(reach);
+    std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+    votes = outside_votes(p, m, std::sqrt(r[r.size() / 2] * 3.14159265358979 / double(k)));
+  }
+  if(!step(0.7)) return report;
+
+  // Kruskal's spanning forest, without the edges that would join two parts whose votes disagree;
+  // union-find with parities (a point flipped relative to its parent), each root holding the sum
+  // of its part's votes in its own frame
+  std::vector<std::uint32_t> up(n);
+  std::vector<std::uint8_t> parity(n, 0), height(n, 0);
+  std::vector<int> vote_sum(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    up[i] = std::uint32_t(i);
+    vote_sum[i] = votes[i];
+  }
+  const auto find = [&](std::uint32_t i) {
+    std::uint8_t flip = 0;
+    std::uint32_t root = i;
+    while(up[root] != root) {
+      flip ^= parity[root];
+      root = up[root];
+    }
+    for(std::uint8_t f = flip; up[i] != root;) { // path compression, parities kept
+      const std::uint32_t next = up[i];
+      const std::uint8_t pf = parity[i];
+      up[i] = root;
+      parity[i] = f;
+      f ^= pf;
+      i = next;
+    }
+    return std::make_pair(root, flip);
+  };
   std::vector<std::vector<std::pair<std::uint32_t, bool>>> forest(n);
   for(const Edge& e : edges) {
-    const std::size_t a = sets.find_set(e.i), b = sets.find_set(e.j);
+    const auto [a, fa] = find(e.i);
+    const auto [b, fb] = find(e.j);
     if(a == b) continue;
-    sets.link(a, b);
+    const std::uint8_t x = fa ^ fb ^ std::uint8_t(e.flips); // b's frame relative to a's
+    const int vb = x ? -vote_sum[b] : vote_sum[b];
+    if((vote_sum[a] > 0 && vb < 0) || (vote_sum[a] < 0 && vb > 0)) continue;
+    auto [child, root] = height[a] < height[b] ? std::make_pair(a, b) : std::make_pair(b, a);
+    if(height[a] == height[b]) ++height[root];
+    up[child] = root;
+    parity[child] = x;
+    vote_sum[root] = vote_sum[a] + vb; // in a's frame, which is root's frame up to the parity x
+    if(root == b && x) vote_sum[root] = -vote_sum[root];
     forest[e.i].emplace_back(e.j, e.flips);
     forest[e.j].emplace_back(e.i, e.flips);
   }
   std::vector<int> sign(n, 0);
   std::vector<std::uint32_t> tree_of(n), stack;
   std::vector<double> outwardness; // per tree: sum of (p - c) . n, c the tree's centroid
+  std::vector<int> tree_votes;     // per tree: its points' votes in its frame
   std::vector<std::size_t> tree_size;
   for(std::size_t root = 0; root < n; ++root) {
     if(sign[root] != 0) continue;
     const auto t = std::uint32_t(outwardness.size());
     outwardness.push_back(0.);
+    tree_votes.push_back(0);
     tree_size.push_back(0);
     Vec<3> point_sum = Vec<3>::Zero(), normal_sum = Vec<3>::Zero();
     sign[root] = 1;
@@ -207,6 +258,7 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
       tree_of[i] = t;
       ++tree_size[t];
       outwardness[t] += sign[i] * p[i].dot(m[i]);
+      tree_votes[t] += sign[i] * votes[i];
       point_sum += p[i];
       normal_sum += sign[i] * m[i];
       for(const auto& [j, flips] : forest[i])
@@ -219,16 +271,20 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   }
   if(!step(0.95)) return report;
 
-  // 3. each tree outward; trees of one point away from the centroid
+  // 4. each tree outward, by its votes or else by its outwardness; trees of one point away from the
+  // centroid
   report.components = outwardness.size();
-  for(std::size_t t = 0; t < outwardness.size(); ++t)
-    report.flipped_components += (tree_size[t] > 1 && outwardness[t] < 0) ? 1 : 0;
+  std::vector<bool> turned(outwardness.size());
+  for(std::size_t t = 0; t < outwardness.size(); ++t) {
+    turned[t] = tree_votes[t] != 0 ? tree_votes[t] < 0 : outwardness[t] < 0;
+    report.flipped_components += (tree_size[t] > 1 && turned[t]) ? 1 : 0;
+  }
   normals.resize(n);
   for(std::size_t i = 0; i < n; ++i) {
     const std::uint32_t t = tree_of[i];
     Vector v = items[i].second;
     if(tree_size[t] > 1) {
-      if(sign[i] * (outwardness[t] < 0 ? -1 : 1) < 0) v = -v;
+      if((sign[i] < 0) != turned[t]) v = -v;
       ++report.oriented_by_mst;
     } else {
       if(v * from_centroid(items[i].first) < 0) v = -v;
