@@ -557,8 +557,8 @@ MLS_TEST(knife_edge_lens_normals_oriented_outward) {
 // The implicit function across the same plate (normals estimated as above, mixed operator):
 // with one-sided neighbourhoods, each side's fits are planes through its own samples, and f on
 // lines across the plate, within 0.35 of its faces (0.8 h), is the signed distance |z| - t/2
-// within 0.1 h (measured 0.046 h). Without, the fits of both sides lie in the middle and are not
-// blended: 0.25 above the plate f is negative (inside), 9.8 h off (measured -4.04).
+// within 0.1 h (measured 0.036 h). Without, the fits of both sides lie in the middle and are not
+// blended (3152 seeds, against 633), and f on the same lines is more than h off (measured 12 h).
 MLS_TEST(thin_plate_one_sided_fits) {
   using Mixed = CGAL::MLS::Mixed_projection<K, 3>;
   CGAL::Random random(1);
@@ -572,7 +572,8 @@ MLS_TEST(thin_plate_one_sided_fits) {
   const auto samples = std::make_shared<const CGAL::MLS::Sample_set<K, 3>>(
     items, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Item>())
              .normal_map(CGAL::Second_of_pair_property_map<Item>()));
-  double worst = 0, h = 0, above_two_sided = 0;
+  double worst[2] = {0, 0}, h = 0;
+  std::size_t unblended[2] = {0, 0};
   for(bool one_sided : {true, false}) {
     CGAL::MLS::Projection_options po;
     po.one_sided = one_sided;
@@ -580,17 +581,15 @@ MLS_TEST(thin_plate_one_sided_fits) {
     const CGAL::MLS::MLS_implicit_function<Mixed> f(mixed, CGAL::MLS::Implicit_function_options(),
                                                     CGAL::Parallel_if_available_tag());
     h = f.bandwidth();
-    if(!one_sided) {
-      above_two_sided = f(Point(1, 1, 0.5));
-      break;
-    }
+    unblended[one_sided] = f.number_of_unblended_seeds();
     for(double x : {-3., 0., 1., 2.5})
-      for(double z = -0.6; z <= 0.6001; z += 0.05) worst = (std::max)(worst, std::abs(f(Point(x, -x / 2, z)) - (std::abs(z) - 0.25)));
+      for(double z = -0.6; z <= 0.6001; z += 0.05)
+        worst[one_sided] = (std::max)(worst[one_sided], std::abs(f(Point(x, -x / 2, z)) - (std::abs(z) - 0.25)));
   }
-  std::cout << "  plate, one-sided: max |f - (|z| - t/2)| = " << worst / h << " h; two-sided: f(1, 1, 0.5) = " << above_two_sided
-            << std::endl;
-  MLS_CHECK_LE(worst, 0.1 * h);
-  MLS_CHECK(above_two_sided < 0);
+  std::cout << "  plate, max |f - (|z| - t/2)|: one-sided " << worst[1] / h << " h (" << unblended[1]
+            << " seeds not blended), two-sided " << worst[0] / h << " h (" << unblended[0] << " not blended)" << std::endl;
+  MLS_CHECK_LE(worst[1], 0.1 * h);
+  MLS_CHECK(worst[0] > h);
 }
 
 // The README's main job: mls_mesh's built-in solid (a box with a bore and a rounded edge, 11810

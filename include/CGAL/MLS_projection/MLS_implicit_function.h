@@ -216,7 +216,8 @@ struct Seed_projection<Projection, false> {
 /// 1 at `far_end`\f$\cdot h\f$, \f$f = (1 - \lambda) f_{\mathrm{fit}} + \lambda\, f_{\mathrm{far}}\f$,
 /// where \f$f_{\mathrm{far}}\f$ is \f$d\f$ signed by the majority of the 3 nearest seeds, each
 /// by its local fit at the point \f$h/2\f$ from the seed towards \f$x\f$ (by its normal where
-/// the fit is undecided there): cheap, not an extrapolated quadratic, unlike the seed's normal
+/// the fit is undecided there; not at all where \f$x\f$ is also within \f$15^\circ\f$ of the
+/// normal's plane, and outside on a tie): cheap, not an extrapolated quadratic, unlike the seed's normal
 /// right beyond a convex crease or corner, whose nearest seed sits on the crease with the normal
 /// of one face, and, by the vote, robust to one bad fit (on noisy data, a fan fitted to the noise).
 ///
@@ -449,7 +450,9 @@ private:
   // The sign of f at `x` as the nearest seed's fit `f` tells it: that of the fit's signed
   // distance at the point h/2 from the seed towards `x` (where the fit still explains its data:
   // at a crease, the fan tells a convex crease's outside from its inside; the seed's normal alone
-  // would put the space beyond the other face inside), or of the normal where that is undecided.
+  // would put the space beyond the other face inside), or of the normal where that is undecided;
+  // 0 (no vote) where `x` is also within 15 degrees of the normal's plane: beyond a knife edge,
+  // seeds on the edge see `x` sideways, and a guess put space far out of the part inside.
   static double far_sign(const Data& d, const Fit& f, const V& x) {
     const V e = x - f.point;
     const double n = e.norm();
@@ -457,10 +460,12 @@ private:
       const double v = fit_distance(d, f, V(f.point + (0.5 * d.h / n) * e));
       if(std::isfinite(v) && std::abs(v) > 0.05 * d.h) return v < 0 ? -1. : 1.;
     }
-    return e.dot(f.normal) < 0 ? -1. : 1.;
+    const double c = e.dot(f.normal);
+    return std::abs(c) < 0.25 * n ? 0. : c < 0 ? -1. : 1.;
   }
 
-  // The far value: the distance to the nearest seed, signed by the majority of the 3 nearest.
+  // The far value: the distance to the nearest seed, signed by the majority of the 3 nearest
+  // (outside on a tie).
   double far_value(const V& x) const {
     const Data& d = *data_;
     thread_local std::vector<std::size_t> idx;

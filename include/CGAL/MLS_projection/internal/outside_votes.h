@@ -68,20 +68,24 @@ inline std::vector<std::int8_t> outside_votes(const std::vector<Vec<3>>& p, cons
     return c[0] + c[1] * sx + c[2] * sxy;
   };
 
-  // the near band and the wall
+  // the near band and the wall: in each row of voxels, the range of centres within the radius
   const int r = int(std::ceil(wall / cell));
+  const auto mark_row = [&](std::uint8_t* row, double qx, double r2, std::uint8_t state) {
+    if(r2 < 0) return;
+    const double half = std::sqrt(r2), x = (qx - origin[0]) / cell - 0.5;
+    const std::int64_t first = std::int64_t(std::ceil(x - half / cell)), last = std::int64_t(std::floor(x + half / cell));
+    for(std::int64_t k = first; k <= last; ++k)
+      if(state == NEAR || row[k] == FREE) row[k] = state;
+  };
   for(const Vec<3>& q : p) {
-    const std::int64_t i = index_of(q), z0 = i / sxy, y0 = (i % sxy) / sx, x0 = i % sx;
+    const std::int64_t i = index_of(q), z0 = i / sxy, y0 = (i % sxy) / sx;
     for(std::int64_t z = z0 - r; z <= z0 + r; ++z)
-      for(std::int64_t y = y0 - r; y <= y0 + r; ++y)
-        for(std::int64_t x = x0 - r; x <= x0 + r; ++x) {
-          const double d2 = (origin + cell * Vec<3>(double(x) + 0.5, double(y) + 0.5, double(z) + 0.5) - q).squaredNorm();
-          std::uint8_t& g = grid[std::size_t(x + y * sx + z * sxy)];
-          if(d2 <= near * near)
-            g = NEAR;
-          else if(d2 <= wall * wall && g == FREE)
-            g = WALL;
-        }
+      for(std::int64_t y = y0 - r; y <= y0 + r; ++y) {
+        const double dy = origin[1] + cell * (double(y) + 0.5) - q[1], dz = origin[2] + cell * (double(z) + 0.5) - q[2];
+        std::uint8_t* row = grid.data() + y * sx + z * sxy;
+        mark_row(row, q[0], wall * wall - dy * dy - dz * dz, WALL);
+        mark_row(row, q[0], near * near - dy * dy - dz * dz, NEAR);
+      }
   }
 
   // breadth-first spreading of a class from the queued voxels into the voxels of state `from`
