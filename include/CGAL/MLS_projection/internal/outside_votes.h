@@ -49,12 +49,13 @@ inline std::vector<std::int8_t> outside_votes(const std::vector<Vec<3>>& p, cons
     lo = lo.cwiseMin(q);
     hi = hi.cwiseMax(q);
   }
-  double cell = 0.5 * spacing;
-  std::array<std::int64_t, 3> dims;
-  for(;; cell *= 1.25) {
-    for(int a = 0; a < 3; ++a) dims[a] = std::int64_t(std::ceil((hi[a] - lo[a] + 2 * wall) / cell)) + 4;
-    if(double(dims[0]) * double(dims[1]) * double(dims[2]) <= double(max_cells)) break;
+  if(!(hi - lo).allFinite()) return votes;
+  double cell = 0.5 * spacing, extent[3];
+  for(;; cell *= 1.25) { // in doubles: the first sizes may exceed any integer
+    for(int a = 0; a < 3; ++a) extent[a] = std::ceil((hi[a] - lo[a] + 2 * wall) / cell) + 4;
+    if(extent[0] * extent[1] * extent[2] <= double(max_cells)) break;
   }
+  const std::array<std::int64_t, 3> dims = {std::int64_t(extent[0]), std::int64_t(extent[1]), std::int64_t(extent[2])};
   const Vec<3> origin = lo - Vec<3>::Constant(wall + 2 * cell);
   const std::int64_t sx = dims[0], sxy = dims[0] * dims[1], cells = sxy * dims[2];
   enum : std::uint8_t { FREE, NEAR, WALL, OUTSIDE, ENCLOSED };
