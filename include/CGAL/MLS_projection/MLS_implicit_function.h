@@ -164,8 +164,9 @@ struct Seed_projection<Projection, false> {
 ///
 /// <b>Orientation.</b> The sign comes from a consistently oriented normal field on the samples:
 /// the input normals when the sample set has some, otherwise normals estimated with
-/// `pca_estimate_normals` and oriented along a minimum spanning forest of their neighbour graph,
-/// each tree turned outward as a whole (see `internal::estimate_oriented_normals()`).
+/// `pca_estimate_normals` and oriented along a minimum spanning forest of their neighbour graph
+/// that never joins parts on which the free space around the points votes differently, each
+/// tree turned outward as a whole (see `internal::estimate_oriented_normals()`).
 /// The normal of each local fit is flipped to agree with the oriented normals of the samples
 /// nearest to its projected point (the sign of the sum of the dot products with the 6 nearest).
 ///
