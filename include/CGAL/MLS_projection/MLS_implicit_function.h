@@ -13,6 +13,7 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Sample_set.h>
+#include <CGAL/MLS_projection/internal/Lattice_value_cache.h>
 #include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/project_points.h>
@@ -159,8 +160,9 @@ struct Seed_projection<Projection, false> {
 /// The MLS surface of a projection operator as an implicit function, a model of CGAL's
 /// `ImplicitFunction` concept (`FT operator()(Point_3)`), negative inside, for CGAL's meshers
 /// (see `mls_surface_reconstruction()`), in the manner of `Poisson_reconstruction_function`:
-/// cheap to copy (its data are shared, immutable, behind a `std::shared_ptr`), no shared mutable
-/// state, `operator()` is `const` and safe to call from many threads at once.
+/// cheap to copy (its data are shared, immutable but for a thread-safe cache of far values,
+/// behind a `std::shared_ptr`), `operator()` is `const`, safe to call from many threads at once,
+/// and its values do not depend on the threads.
 ///
 /// <b>Orientation.</b> The sign comes from a consistently oriented normal field on the samples:
 /// the input normals when the sample set has some, otherwise normals estimated with
@@ -221,6 +223,10 @@ struct Seed_projection<Projection, false> {
 /// normal's plane, and outside on a tie): cheap, not an extrapolated quadratic, unlike the seed's normal
 /// right beyond a convex crease or corner, whose nearest seed sits on the crease with the normal
 /// of one face, and, by the vote, robust to one bad fit (on noisy data, a fan fitted to the noise).
+/// Where \f$f_{\mathrm{far}}\f$ at the 8 corners of the cell of \f$x\f$ in a lattice of spacing \f$h\f$
+/// is beyond `far_end`\f$\cdot h\f$ plus the cell's diagonal, \f$f\f$ is their trilinear
+/// interpolation, each computed once (the meshers evaluate many points deep inside, where the
+/// nearest seeds are costly to find).
 ///
 /// <b>Evaluation, `EXACT`.</b> \f$f(x) = \pm|x - P(x)|\f$, \f$P\f$ the projection, the sign that of
 /// \f$(x - P(x))\cdot n\f$ with \f$n\f$ the result's normal oriented as above; where the projection
@@ -295,7 +301,10 @@ public:
     if(!x.allFinite()) return std::numeric_limits<double>::max();
     thread_local std::vector<std::size_t> idx;
     const std::size_t k = std::size_t(std::clamp(d.options.blend_neighbors, 2, 63)); // dist holds k + 1
-    d.seeds->k_nearest(x, k + 1, idx);
+    // the k + 1 nearest seeds, searched within far_end h + 2h only: beyond, x is in the far region
+    d.seeds->k_nearest(x, k + 1, idx, (d.options.far_end + 2.) * d.h);
+    if(idx.empty() || !((x - d.fits[idx[0]].point).norm() < d.options.far_end * d.h)) return far_region_value(x);
+    if(idx.size() < k + 1) d.seeds->k_nearest(x, k + 1, idx); // isolated seeds
     // distances, the nearest seed, and R = the largest distance (the (k+1)-th seed)
     std::array<double, 64> dist;
     const std::size_t m = (std::min<std::size_t>)(idx.size(), dist.size());
@@ -411,11 +420,12 @@ private:
 
   struct Data {
     Data(const Projection& p, const Implicit_function_options& o)
-      : projection(p), evaluator(p), options(o), h(p.bandwidth()) {}
+      : projection(p), evaluator(p), options(o), h(p.bandwidth()), far_corners(h > 0 && std::isfinite(h) ? h : 1.) {}
     Projection projection;
     Evaluator evaluator;
     Implicit_function_options options;
     double h;
+    mutable internal::Lattice_value_cache far_corners; // see far_region_value()
     std::vector<V> sample_normals; // oriented, indexed like the samples (local coordinates)
     std::shared_ptr<const Samples> seeds; // the projected seeds and their kd-tree
     std::vector<Fit> fits;                // indexed like `seeds`
@@ -478,6 +488,37 @@ private:
       dmin = (std::min)(dmin, (x - d.fits[i].point).norm());
     }
     return (vote < 0 ? -1. : 1.) * dmin;
+  }
+
+  // The far value where no seed is within far_end h of `x`: when the far values at the 8 corners
+  // of the cell of `x` in a lattice of spacing h are all beyond far_end h + the cell's diagonal
+  // (so is then the whole cell), their trilinear interpolation (continuous: the meshers' root
+  // finding needs no cell faces for surfaces); else `far_value(x)`. The corner values are
+  // computed once: Mesh_3 labels its cells at their circumcentres, near the medial axis deep
+  // inside, where many seeds are almost as near as the nearest and a query of the nearest seeds
+  // costs some ten times one near the surface.
+  double far_region_value(const V& x) const {
+    const Data& d = *data_;
+    const double e = d.far_corners.spacing();
+    const double reach = d.options.far_end * d.h + std::sqrt(3.) * e;
+    const V g = x / e;
+    std::array<double, 3> base;
+    for(int j = 0; j < 3; ++j) {
+      base[j] = std::floor(g[j]);
+      if(!(std::abs(base[j]) + 1 < internal::Lattice_value_cache::max_index)) return far_value(x);
+    }
+    const V t(g[0] - base[0], g[1] - base[1], g[2] - base[2]);
+    double value = 0;
+    for(int c = 0; c < 8; ++c) {
+      const std::array<double, 3> node{base[0] + (c & 1), base[1] + ((c >> 1) & 1), base[2] + ((c >> 2) & 1)};
+      const double v = d.far_corners.value(node, [&](const V& p) {
+        const double f = far_value(p);
+        return std::abs(f) >= reach ? f : 0.; // 0: the node is not far enough
+      });
+      if(v == 0) return far_value(x);
+      value += v * ((c & 1) ? t[0] : 1 - t[0]) * (((c >> 1) & 1) ? t[1] : 1 - t[1]) * (((c >> 2) & 1) ? t[2] : 1 - t[2]);
+    }
+    return value;
   }
 
   // Whether the oriented fit `f` (sample-local coordinates) agrees with the oriented normals of

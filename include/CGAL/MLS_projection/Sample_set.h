@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -115,11 +116,12 @@ public:
   /// The `i`-th unit normal (null if the input normal was null or not finite). \pre `has_normals()`
   const Local_point& local_normal(std::size_t i) const { return normals_[i]; }
 
-  /// Writes to `out` the indices of the `k` points nearest to `x` (local coordinates), nearest
-  /// first (ties by index).
-  void k_nearest(const Local_point& x, std::size_t k, std::vector<std::size_t>& out) const {
+  /// Writes to `out` the indices of the `k` points nearest to `x` (local coordinates) among those
+  /// within `radius` of it, nearest first (ties by index).
+  void k_nearest(const Local_point& x, std::size_t k, std::vector<std::size_t>& out,
+                 double radius = std::numeric_limits<double>::infinity()) const {
     thread_local std::vector<std::pair<double, std::size_t>> found;
-    tree_.k_nearest(x, k, found);
+    tree_.k_nearest(x, k, found, radius);
     out.resize(found.size());
     for(std::size_t i = 0; i < found.size(); ++i) out[i] = found[i].second;
   }

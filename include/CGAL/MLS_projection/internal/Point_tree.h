@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -69,12 +70,14 @@ public:
     }
   }
 
-  /// The `k` points nearest to `c` (all when there are fewer), written to `out` as (squared
-  /// distance, index) pairs sorted by distance, then index.
-  void k_nearest(const Vec<D>& c, std::size_t k, std::vector<std::pair<double, std::size_t>>& out) const {
+  /// The `k` points nearest to `c` among those within `radius` of it (all when there are
+  /// fewer), written to `out` as (squared distance, index) pairs sorted by distance, then index.
+  void k_nearest(const Vec<D>& c, std::size_t k, std::vector<std::pair<double, std::size_t>>& out,
+                 double radius = std::numeric_limits<double>::infinity()) const {
     out.clear();
-    if(nodes_.empty() || k == 0) return;
+    if(nodes_.empty() || k == 0 || !(radius >= 0)) return;
     k = (std::min)(k, points_.size());
+    const double r2 = radius * radius;
     // `out` is a max-heap on (distance, index) while searching
     const auto worse = [](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b) { return a < b; };
     struct Entry {
@@ -96,11 +99,12 @@ public:
     stack[top++] = {0, box_distance(nodes_[0])};
     while(top > 0) {
       const Entry e = stack[--top];
-      if(out.size() == k && e.bound > out.front().first) continue;
+      if(e.bound > r2 || (out.size() == k && e.bound > out.front().first)) continue;
       const Node& node = nodes_[e.node];
       if(node.dimension < 0) {
         for(std::uint32_t i = node.begin; i < node.end; ++i) {
           const std::pair<double, std::size_t> candidate((points_[i] - c).squaredNorm(), std::size_t(index_[i]));
+          if(candidate.first > r2) continue;
           if(out.size() < k) {
             out.push_back(candidate);
             std::push_heap(out.begin(), out.end(), worse);

@@ -36,6 +36,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -123,24 +124,33 @@ struct Evaluation_monitor {
   }
 };
 
-// The values of the function at the last points this thread evaluated in a run: Mesh_3 evaluates
-// the ends of a segment to test it for an intersection, then again to construct it.
+// The values of the function at points this thread evaluated in a run, in a direct-mapped table
+// indexed by a hash of the coordinates: Mesh_3 evaluates the circumcentre of each new cell to label
+// it, then again as an end of each of its facets' dual segments, and the ends of a segment to test
+// it for an intersection, then again to construct it.
 struct Recent_values {
   struct Entry {
     std::uint64_t run = 0;
     double x = 0, y = 0, z = 0, value = 0;
   };
-  std::array<Entry, 4> entries;
-  unsigned next = 0;
+  static constexpr int bits = 12;
+  std::vector<Entry> entries = std::vector<Entry>(std::size_t(1) << bits);
 
+  static std::size_t slot(double x, double y, double z) {
+    std::uint64_t h = 0;
+    for(double c : {x, y, z}) {
+      std::uint64_t b;
+      std::memcpy(&b, &c, sizeof b);
+      h = (h ^ b) * 0x9E3779B97F4A7C15ull;
+    }
+    return std::size_t(h >> (64 - bits));
+  }
   const double* find(std::uint64_t run, double x, double y, double z) const {
-    for(const Entry& e : entries)
-      if(e.run == run && e.x == x && e.y == y && e.z == z) return &e.value;
-    return nullptr;
+    const Entry& e = entries[slot(x, y, z)];
+    return e.run == run && e.x == x && e.y == y && e.z == z ? &e.value : nullptr;
   }
   void add(std::uint64_t run, double x, double y, double z, double value) {
-    entries[next] = Entry{run, x, y, z, value};
-    next = (next + 1) % entries.size();
+    entries[slot(x, y, z)] = Entry{run, x, y, z, value};
   }
 };
 
