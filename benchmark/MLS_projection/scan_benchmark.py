@@ -142,6 +142,19 @@ def measure_scan(tools, mesh, scan, n, args, log):
     return row
 
 
+def scaled_scan(tools, mesh, work, part, noise, args, log):
+    """A scan of --scale points of `mesh` (seed 1), with the noise level `noise` of --points scaled
+    by sqrt(points / scale): the same noise in spacings, so that the two sizes are the same regime
+    and their times compare."""
+    scaled = float(noise) * math.sqrt(args.points / args.scale)
+    d = os.path.join(work, "%s_scale_n%s" % (part, noise))
+    os.makedirs(d, exist_ok=True)
+    scan = os.path.join(d, "scan.xyz")
+    subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), repr(scaled), "1", scan], check=True)
+    log("%s, %d points, noise %g" % (part, args.scale, scaled))
+    return scan
+
+
 def measure_meshing(tools, mesh, scan, args, log):
     """mls_mesh with its defaults and poisson_mesh on `scan`, both on all cores; their time, peak
     memory and `scan_part mesh` figures against the part `mesh`."""
@@ -168,9 +181,9 @@ def measure_meshing(tools, mesh, scan, args, log):
     return rows
 
 
-def print_meshing(rows, args):
+def print_meshing(rows, points):
     print("## Meshing scans of CAD parts (%d points, mls_mesh defaults against CGAL's Poisson, both on all "
-          "cores, one run)\n" % args.points)
+          "cores, one run)\n" % points)
     print("| part | noise | seed | method | s | peak MB | closed | manifold | components | self-intersecting | "
           "Hausdorff | RMS | normal error (deg) | sharp-edge distance | note |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -187,9 +200,10 @@ def print_meshing(rows, args):
             get("normal_deg"), get("edge_distance"), note))
     mls = [r for r in rows if r["method"] == "MLS"]
     good = sum(1 for r in mls if r.get("closed") == "1" and r.get("manifold") == "1")
-    print("\nMLS: %d closed manifold meshes of %d scans; time MLS / Poisson, median %.2f" % (
-        good, len(mls), statistics.median(m["seconds"] / p["seconds"]
-                                           for m, p in zip(rows[0::2], rows[1::2]))))
+    pairs = list(zip(rows[0::2], rows[1::2]))
+    print("\nMLS: %d closed manifold meshes of %d scans; MLS / Poisson, medians: time %.2f, peak memory %.2f" % (
+        good, len(mls), statistics.median(m["seconds"] / p["seconds"] for m, p in pairs),
+        statistics.median(m["memory"] / p["memory"] for m, p in pairs)))
 
 
 def main():
@@ -201,7 +215,8 @@ def main():
     parser.add_argument("--seeds", default="1,2")
     parser.add_argument("--runs", type=int, default=3, help="runs per measurement (the median is kept)")
     parser.add_argument("--isolated", type=int, default=2000, help="queries of the isolated case")
-    parser.add_argument("--scale", type=int, default=0, help="also project this many points (e.g. 1000000)")
+    parser.add_argument("--scale", type=int, default=0,
+                        help="also project (or, with --meshing, mesh) this many points of the first part (e.g. 1000000)")
     parser.add_argument("--work", default=None, help="directory of the scans (default: a temporary one)")
     parser.add_argument("--meshing", action="store_true", help="mesh the scans (mls_mesh, poisson_mesh) instead")
     parser.add_argument("--timeout", type=float, default=900, help="seconds after which a mesher is stopped")
@@ -235,7 +250,20 @@ def main():
                 row.update(part=part, noise=float(noise), seed=seed)
                 rows.append(row)
     if args.meshing:
-        print_meshing(rows, args)
+        print_meshing(rows, args.points)
+        if args.scale:
+            part = args.parts.split(",")[0]
+            mesh = export_part(part, work)
+            rows = []
+            for noise in args.noise.split(","):
+                scan = scaled_scan(tools, mesh, work, part, noise, args, log)
+                for row in measure_meshing(tools, mesh, scan, args, log):
+                    row.update(part=part, noise=float(noise), seed="1")
+                    rows.append(row)
+            print()
+            print_meshing(rows, args.scale)
+            print("\n(noise: at %d points; the scan's is scaled by sqrt(%d / %d), the same in spacings)"
+                  % (args.points, args.points, args.scale))
         return
 
     print("## Projection on scans of CAD parts (%d points, medians of %d runs, one thread unless said)\n"
@@ -256,8 +284,6 @@ def main():
               statistics.median(r["per_query"] / (r["PCL"] / args.points) for r in rows)))
 
     if args.scale:
-        # The noise levels scaled by sqrt(points / scale): the same noise in spacings as at
-        # --points, so that the two sizes are the same regime and their times compare.
         part = args.parts.split(",")[0]
         mesh = export_part(part, work)
         print("\n## Scale: %d points of %s, one thread, one run\n" % (args.scale, part))
@@ -268,12 +294,9 @@ def main():
         print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         for noise in args.noise.split(","):
             scaled = float(noise) * math.sqrt(args.points / args.scale)
-            d = os.path.join(work, "%s_scale_n%s" % (part, noise))
-            os.makedirs(d, exist_ok=True)
-            scan = os.path.join(d, "scan.xyz")
-            subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), repr(scaled), "1", scan], check=True)
+            scan = scaled_scan(tools, mesh, work, part, noise, args, log)
+            d = os.path.dirname(scan)
             spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
-            log("%s, %d points, noise %g" % (part, args.scale, scaled))
             pcl, pcl_memory = run([tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(4 * spacing), "1"])
             ours, memory = run([tools["mls_project"], "--input", scan, "--output", os.path.join(d, "default.xyz"),
                                 "--threads", "1", "--quiet"])
