@@ -669,7 +669,7 @@ private:
              std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h;
     };
     // The fit each seed blends: the operator's, else P_L's in its place (if it agrees), else none.
-    // Tested in parallel (the tests cost about a tenth of the projections), kept in seed order.
+    // Tested in parallel, kept in seed order.
     enum Kept : std::uint8_t { NONE, OPERATOR, LEVIN };
     std::vector<Fit> seed_fits(results.size());
     std::vector<std::uint8_t> usable(results.size()), kept(results.size(), NONE);
