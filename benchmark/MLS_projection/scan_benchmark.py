@@ -145,14 +145,14 @@ def measure_scan(tools, mesh, scan, n, args, log):
 def scaled_scan(tools, mesh, work, part, noise, args, log):
     """A scan of --scale points of `mesh` (seed 1), with the noise level `noise` of --points scaled
     by sqrt(points / scale): the same noise in spacings, so that the two sizes are the same regime
-    and their times compare."""
+    and their times compare. Returns the scan's path and its noise level."""
     scaled = float(noise) * math.sqrt(args.points / args.scale)
     d = os.path.join(work, "%s_scale_n%s" % (part, noise))
     os.makedirs(d, exist_ok=True)
     scan = os.path.join(d, "scan.xyz")
     subprocess.run([tools["scan_part"], "sample", mesh, str(args.scale), repr(scaled), "1", scan], check=True)
     log("%s, %d points, noise %g" % (part, args.scale, scaled))
-    return scan
+    return scan, scaled
 
 
 def measure_meshing(tools, mesh, scan, args, log):
@@ -256,7 +256,7 @@ def main():
             mesh = export_part(part, work)
             rows = []
             for noise in args.noise.split(","):
-                scan = scaled_scan(tools, mesh, work, part, noise, args, log)
+                scan, _ = scaled_scan(tools, mesh, work, part, noise, args, log)
                 for row in measure_meshing(tools, mesh, scan, args, log):
                     row.update(part=part, noise=float(noise), seed="1")
                     rows.append(row)
@@ -293,8 +293,7 @@ def main():
               % (args.points, args.scale, args.scale, args.points, args.scale / args.points))
         print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         for noise in args.noise.split(","):
-            scaled = float(noise) * math.sqrt(args.points / args.scale)
-            scan = scaled_scan(tools, mesh, work, part, noise, args, log)
+            scan, scaled = scaled_scan(tools, mesh, work, part, noise, args, log)
             d = os.path.dirname(scan)
             spacing = float(output_of([tools["scan_part"], "spacing", scan]).split()[-1])
             pcl, pcl_memory = run([tools["pcl_mls"], scan, os.path.join(d, "pcl.xyz"), repr(4 * spacing), "1"])
