@@ -3,7 +3,7 @@
 //
 // Values at the nodes of a regular lattice, computed once and shared by the threads: a value
 // depends only on its node, whichever thread computes it first, so that results do not depend
-// on the threads.
+// on the threads. Mutex-guarded shards rather than TBB's concurrent_hash_map: TBB is optional.
 
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_LATTICE_VALUE_CACHE_H
 #define CGAL_MLS_PROJECTION_INTERNAL_LATTICE_VALUE_CACHE_H
