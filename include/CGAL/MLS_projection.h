@@ -12,6 +12,7 @@
 #include <CGAL/MLS_projection/Projection_options.h>
 #include <CGAL/MLS_projection/Projection_status.h>
 #include <CGAL/MLS_projection/Projection_result.h>
+#include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
@@ -22,6 +23,7 @@
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/project_points.h>
+#include <CGAL/MLS_projection/interpolate_attributes.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #endif // CGAL_MLS_PROJECTION_H

@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/MLS_projection.h>
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
+#include <CGAL/MLS_projection/interpolate_attributes.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -17,16 +18,20 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
 #include <mls_tools/builtin_solid.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -774,6 +779,196 @@ MLS_TEST(evaluation_and_time_limits) {
 }
 
 // Bad input: a clear false, an empty mesh, no crash; non-finite points are ignored.
+// ---------------------------------------------------------------------------------------------
+// Attributes (colours) carried onto the mesh and the projected points.
+
+// The box [-1, 1]^3 with one colour per face: `count` points uniform on its faces (the same number
+// per face on average), each with its face's colour, moved by uniform noise of amplitude `noise`.
+struct Coloured_point {
+  Point point;
+  std::array<double, 3> colour;
+};
+const std::array<std::array<double, 3>, 6> face_colours = {
+  {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 0}, {0, 255, 255}, {255, 0, 255}}};
+
+std::vector<Coloured_point> coloured_box(std::size_t count, unsigned seed) {
+  CGAL::Random rng(seed);
+  std::vector<Coloured_point> points;
+  for(std::size_t i = 0; i < count; ++i) {
+    const int f = rng.get_int(0, 6), axis = f / 2;
+    std::array<double, 3> c;
+    c[axis] = f % 2 == 0 ? 1. : -1.;
+    c[(axis + 1) % 3] = rng.get_double(-1, 1);
+    c[(axis + 2) % 3] = rng.get_double(-1, 1);
+    points.push_back({Point(c[0], c[1], c[2]), face_colours[std::size_t(f)]});
+  }
+  return points;
+}
+
+// The faces of the box on which `p` lies (within `tolerance`), as indices into face_colours.
+std::vector<int> faces_at(const Point& p, double tolerance) {
+  std::vector<int> faces;
+  for(int axis = 0; axis < 3; ++axis) {
+    if(p[axis] > 1 - tolerance) faces.push_back(2 * axis);
+    if(p[axis] < -1 + tolerance) faces.push_back(2 * axis + 1);
+  }
+  return faces;
+}
+
+// Whether the attribute values `a`, rounded to colour bytes, are the colour of face `f`.
+bool has_colour(const std::vector<double>& a, int f) {
+  for(int k = 0; k < 3; ++k)
+    if(std::lround(a[std::size_t(k)]) != std::lround(face_colours[std::size_t(f)][std::size_t(k)])) return false;
+  return true;
+}
+
+// Counts the points of `points` (with their attribute values) on one face, or on an edge, that
+// do not have their face's colour (one of the two on an edge); those within `corner` of a corner
+// are skipped (a corner's fan has three faces). `tolerance`: how far from a face is on it.
+template <class Range, class Attributes>
+std::array<std::size_t, 4> count_colours(const Range& points, const Attributes& attributes, double tolerance, double corner) {
+  std::array<std::size_t, 4> n{}; // face points, wrong ones, edge points, wrong ones
+  std::size_t i = 0;
+  for(const Point& p : points) {
+    const std::vector<double>& a = attributes(i++);
+    const std::vector<int> faces = faces_at(p, tolerance);
+    bool near_corner = true;
+    for(int k = 0; k < 3; ++k) near_corner = near_corner && std::abs(std::abs(p[k]) - 1) < corner;
+    if(faces.empty() || faces.size() > 2 || near_corner) continue;
+    bool any = false;
+    for(int f : faces) any = any || has_colour(a, f);
+    const std::size_t slot = faces.size() == 1 ? 0 : 2;
+    ++n[slot];
+    if(!any) ++n[slot + 1];
+  }
+  return n;
+}
+
+// The default meshing (unified operator, mixed space, features) of a box with a colour per face:
+// every vertex on one face takes that face's colour exactly (after rounding to bytes, as in a
+// PLY file), every vertex on an edge one of its two faces', those within 3 spacings of a corner
+// aside. A Gaussian-weighted mean over the support would blur the colours over a band of about
+// 2h on each side of an edge; the fits' faces keep them apart. Two samplings.
+MLS_TEST(attributes_box_faces_keep_their_colours) {
+  for(unsigned seed : {1u, 2u}) {
+    const auto points = coloured_box(6000, seed);
+    Mesh mesh;
+    auto colours = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:colour").first;
+    CGAL::MLS::Meshing_report report;
+    Options options;
+    options.report = &report;
+    const auto np = CGAL::MLS::parameters::vertex_attribute_map(
+      colours, CGAL::MLS::parameters::attribute_map(boost::make_function_property_map<Coloured_point>(
+                                                      [](const Coloured_point& c) { return c.colour; }))
+                 .point_map(boost::make_function_property_map<Coloured_point>([](const Coloured_point& c) { return c.point; })));
+    MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, mesh, options, np));
+    MLS_CHECK(CGAL::is_closed(mesh));
+    std::vector<Point> positions;
+    std::vector<Mesh::Vertex_index> vs;
+    for(auto v : mesh.vertices()) {
+      positions.push_back(mesh.point(v));
+      vs.push_back(v);
+      MLS_CHECK(colours[v].size() == 3);
+    }
+    // on a face: within 1e-3 spacing of it (the mesh's vertices on the creases are within
+    // 1e-4 spacing of them, test_sharp_features)
+    const double s = report.average_spacing;
+    const auto n = count_colours(positions, [&](std::size_t i) -> const std::vector<double>& { return colours[vs[i]]; },
+                                 1e-3 * s, 3 * s);
+    std::cout << "  seed " << seed << ": " << n[0] << " face vertices (" << n[1] << " of another colour), " << n[2]
+              << " edge vertices (" << n[3] << "), " << report.feature_polylines << " polylines" << std::endl;
+    MLS_CHECK(n[0] > 1000);
+    MLS_CHECK(n[2] > 100);
+    MLS_CHECK(n[1] == 0);
+    MLS_CHECK(n[3] == 0);
+  }
+}
+
+// A smooth linear ramp (the height z) on a sphere, meshed with P_L: each vertex's value is the
+// weighted mean of the ramp around it, i.e. the ramp at the weighted centroid of the points,
+// which the curvature moves by about h^2/2 and the irregular random sampling by about
+// h / sqrt(number of weighted points) (some 0.15 h here): the bound is 3 h^2 (0.44 h, h = 0.146).
+// A constant second channel comes out constant (to rounding).
+MLS_TEST(attributes_sphere_ramp) {
+  std::vector<std::pair<Point, std::array<double, 2>>> points;
+  for(const Point& p : sphere_points(3000)) points.push_back({p, {p.z(), 7.5}});
+  using Item = std::pair<Point, std::array<double, 2>>;
+  Mesh mesh;
+  auto values = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:values").first;
+  CGAL::MLS::Meshing_report report;
+  Options options = levin_options();
+  options.report = &report;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(
+    points, mesh, options,
+    CGAL::MLS::parameters::vertex_attribute_map(
+      values, CGAL::MLS::parameters::attribute_map(CGAL::Second_of_pair_property_map<Item>())
+                .point_map(CGAL::First_of_pair_property_map<Item>()))));
+  double worst = 0, worst_constant = 0;
+  for(auto v : mesh.vertices()) {
+    worst = (std::max)(worst, std::abs(values[v][0] - mesh.point(v).z()));
+    worst_constant = (std::max)(worst_constant, std::abs(values[v][1] - 7.5));
+  }
+  const double h = report.bandwidth;
+  std::cout << "  " << num_vertices(mesh) << " vertices, h " << h << ": ramp error " << worst << " (" << worst / (h * h)
+            << " h^2), constant " << worst_constant << std::endl;
+  MLS_CHECK(num_vertices(mesh) > 500);
+  MLS_CHECK_LE(worst, 3 * h * h);
+  MLS_CHECK_LE(worst_constant, 1e-12);
+}
+
+// The projected points of the coloured box (mixed operator, project_points): each projected input
+// point takes its face's colour exactly. Without an attribute map, nothing is written.
+MLS_TEST(attributes_of_projected_points) {
+  using Mixed = CGAL::MLS::Mixed_projection<K, 3>;
+  const auto points = coloured_box(6000, 3);
+  const Mixed projection(points, CGAL::MLS::Projection_options(),
+                         CGAL::MLS::parameters::attribute_map(boost::make_function_property_map<Coloured_point>(
+                                                                [](const Coloured_point& c) { return c.colour; }))
+                           .point_map(boost::make_function_property_map<Coloured_point>([](const Coloured_point& c) { return c.point; })));
+  MLS_CHECK(projection.samples().number_of_attributes() == 3);
+  std::vector<Point> queries;
+  for(const auto& c : points) queries.push_back(c.point);
+  std::vector<Mixed::Result> results;
+  CGAL::MLS::project_points<CGAL::Parallel_if_available_tag>(projection, queries, std::back_inserter(results));
+  std::vector<Point> projected;
+  std::vector<std::vector<double>> colours(results.size());
+  for(std::size_t i = 0; i < results.size(); ++i) {
+    projected.push_back(results[i].point);
+    CGAL::MLS::interpolate_attributes(projection, results[i], std::back_inserter(colours[i]));
+  }
+  const double s = projection.bandwidth();
+  const auto n = count_colours(projected, [&](std::size_t i) -> const std::vector<double>& { return colours[i]; }, 1e-6, s);
+  std::cout << "  " << n[0] << " points on a face (" << n[1] << " of another colour), " << n[2] << " on an edge (" << n[3]
+            << ")" << std::endl;
+  MLS_CHECK(n[0] > 5000);
+  MLS_CHECK(n[1] == 0);
+  MLS_CHECK(n[3] == 0);
+  const Mixed plain(queries);
+  MLS_CHECK(plain.samples().number_of_attributes() == 0);
+  std::vector<double> none;
+  CGAL::MLS::interpolate_attributes(plain, plain.project(queries[0]), std::back_inserter(none));
+  MLS_CHECK(none.empty());
+}
+
+// Attribute values of different sizes are refused with a message.
+MLS_TEST(attributes_of_different_sizes) {
+  std::vector<std::pair<Point, std::vector<double>>> points;
+  for(const Point& p : sphere_points(500)) points.push_back({p, std::vector<double>(points.size() == 100 ? 2 : 3, 1.)});
+  using Item = std::pair<Point, std::vector<double>>;
+  Mesh mesh;
+  auto values = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:values").first;
+  CGAL::MLS::Meshing_report report;
+  Options options = levin_options();
+  options.report = &report;
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(
+    points, mesh, options,
+    CGAL::MLS::parameters::vertex_attribute_map(
+      values, CGAL::MLS::parameters::attribute_map(CGAL::Second_of_pair_property_map<Item>())
+                .point_map(CGAL::First_of_pair_property_map<Item>()))));
+  std::cout << "  " << report.failure << std::endl;
+  MLS_CHECK(std::string(report.failure).find("channels") != std::string::npos);
+}
+
 MLS_TEST(bad_input) {
   Mesh m;
   MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(std::vector<Point>(), m));

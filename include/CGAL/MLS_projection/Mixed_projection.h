@@ -128,11 +128,12 @@ public:
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
-  /// The bandwidth \f$h\f$, the preference factor of the sharp space, the estimated noise
+  /// The bandwidth \f$h\f$, the weight function (both operators'), the preference factor of the sharp space, the estimated noise
   /// variance \f$\hat\sigma^2\f$ of the samples, the noise threshold \f$\tau\f$ of the screening (a
   /// squared length), the options, the shared sample set, and the two operators.
   /// @{
   double bandwidth() const { return smooth_.bandwidth(); }
+  const Weight_function& weight() const { return smooth_.weight(); }
   double sharp_preference() const { return sharp_preference_; }
   double noise_variance() const { return noise_variance_; }
   double screening_threshold() const { return threshold_; }

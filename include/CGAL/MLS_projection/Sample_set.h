@@ -6,8 +6,10 @@
 
 #include <CGAL/MLS_projection/internal/Dimension.h>
 #include <CGAL/MLS_projection/internal/Point_tree.h>
+#include <CGAL/MLS_projection/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -24,7 +26,9 @@ namespace MLS {
 /// \ingroup PkgMLSProjectionRef
 /// The input of every projection operator: the input points (and optional unit normals)
 /// copied once, translated so that their centroid is the origin, and a kd-tree over them
-/// for k-nearest and ball queries.
+/// for k-nearest and ball queries, and optionally per-point attributes (any number of scalar
+/// channels: colours, intensities) that `interpolate_attributes()` carries onto projections and
+/// meshes.
 ///
 /// Centring makes scans with large coordinate offsets (e.g. UTM coordinates, offsets of
 /// \f$10^6\f$) as accurate as centred ones: all computations are done in double precision
@@ -51,12 +55,15 @@ private:
   using KT = internal::Kernel_types<GeomTraits, D>;
 
 public:
-  /// Copies the points of `points` (and the normals, when the named parameter `normal_map`
-  /// is given) and builds the kd-tree.
+  /// Copies the points of `points` (and the normals and attributes, when the named parameters
+  /// `normal_map` and `attribute_map` are given) and builds the kd-tree.
   ///
   /// \param points a range of input points
   /// \param np optional named parameters: `point_map` (default: identity),
-  ///        `normal_map` (default: none; input normals are used to orient the results)
+  ///        `normal_map` (default: none; input normals are used to orient the results),
+  ///        `attribute_map` (default: none; see `CGAL::MLS::parameters::attribute_map()`)
+  /// \pre the attribute values of all points have the same number of channels (otherwise no
+  ///      attribute is kept: `number_of_attributes()` is 0)
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit Sample_set(const PointRange& points, const NamedParameters& np = parameters::default_values()) {
     using parameters::choose_parameter;
@@ -65,6 +72,9 @@ public:
     using Default_point_map = CGAL::Identity_property_map<Value>;
     auto point_map = choose_parameter(get_parameter(np, internal_np::point_map), Default_point_map());
     constexpr bool has_normals = !parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value;
+    constexpr bool has_attributes =
+      !parameters::is_default_parameter<NamedParameters, internal_np::mls_attribute_map_t>::value;
+    bool consistent = true;
 
     // Centroid in long double so that large offsets do not lose the small differences.
     std::vector<Local_point> world;
@@ -83,6 +93,19 @@ public:
         const double len = n.norm();
         normals.push_back(n.allFinite() && len > 0 ? Local_point(n / len) : Local_point(Local_point::Zero()));
       }
+      if constexpr(has_attributes) {
+        const auto& values = get(get_parameter(np, internal_np::mls_attribute_map), v);
+        const std::size_t c = std::size_t(std::distance(std::begin(values), std::end(values)));
+        if(world.size() == 1) channels_ = c;
+        consistent = consistent && c == channels_;
+        if(consistent)
+          for(const auto& x : values) attributes_.push_back(static_cast<double>(x));
+      }
+    }
+    CGAL_precondition_msg(consistent, "the attribute values must all have the same number of channels");
+    if(!consistent) {
+      channels_ = 0;
+      attributes_.clear();
     }
     Eigen::Matrix<long double, D, 1> sum = Eigen::Matrix<long double, D, 1>::Zero();
     for(const auto& p : world) sum += p.template cast<long double>();
@@ -103,6 +126,10 @@ public:
   std::size_t number_of_ignored_points() const { return ignored_; }
   /// Whether the input has normals (a `normal_map` was given).
   bool has_normals() const { return !normals_.empty(); }
+  /// The number of attribute channels per point (0 without an `attribute_map`).
+  std::size_t number_of_attributes() const { return channels_; }
+  /// The `number_of_attributes()` attribute values of the `i`-th point.
+  const double* attributes(std::size_t i) const { return attributes_.data() + i * channels_; }
 
   /// The translation applied to the input: local coordinates are world coordinates minus `centre()`.
   const Local_point& centre() const { return centre_; }
@@ -163,6 +190,8 @@ public:
 private:
   std::vector<Local_point> points_;
   std::vector<Local_point> normals_;
+  std::vector<double> attributes_; // channels_ values per point
+  std::size_t channels_ = 0;
   Local_point centre_ = Local_point::Zero();
   std::size_t ignored_ = 0;
   internal::Point_tree<D> tree_;

@@ -16,7 +16,9 @@
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/detect_sharp_features.h>
+#include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/mesh_attributes.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 
@@ -25,6 +27,8 @@
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
+
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -102,17 +106,21 @@ bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radi
 /// \tparam PointRange a range of points (read through `point_map`)
 /// \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `CGAL::Surface_mesh`)
 /// \param points the input samples; points with a non-finite coordinate are ignored
-/// \param mesh the output; cleared first, and left empty when the function returns `false`
+/// \param mesh the output; cleared first (its property maps are kept), and left empty when the function returns `false`
 /// \param options the operator, space, mesher, features and criteria
 /// \param np optional named parameters: `point_map` (default: identity), `normal_map` (default:
 ///        none; the normals are then estimated and oriented), `geom_traits` (default: the kernel
 ///        of the point type), `callback` (a `std::function<bool(double)>` called from the
 ///        calling thread with the fraction of the whole job done, in [0, 1]; returning `false`
-///        cancels: the function then returns `false` and `mesh` stays empty)
+///        cancels: the function then returns `false` and `mesh` stays empty), `attribute_map` and
+///        `vertex_attribute_map` (default: none; see `CGAL::MLS::parameters::attribute_map()`:
+///        with both, each vertex of the mesh gets the attributes of the input points interpolated
+///        on the local fit of its nearest seed, see `interpolate_attributes()`)
 /// \return `true` on success; `false` when cancelled, when there are fewer than 10 finite
 ///         points, when the operator and space do not go together (`LEVIN` with `WEDGE` or
 ///         `MIXED`), when the implicit function cannot be built (degenerate data) or has no inside,
-///         or when the mesher produced no facet
+///         or when the mesher produced no facet, or when the attribute values do not all have the
+///         same number of channels
 template <class ConcurrencyTag = Sequential_tag, class PointRange, class PolygonMesh,
           class NamedParameters = parameters::Default_named_parameters>
 bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
@@ -127,13 +135,16 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
   using Samples = Sample_set<K, 3>;
   using Item = std::pair<Point_3, Vector_3>;
   constexpr bool has_normals = !parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value;
+  constexpr bool has_attributes =
+    !parameters::is_default_parameter<NamedParameters, internal_np::mls_attribute_map_t>::value &&
+    !parameters::is_default_parameter<NamedParameters, internal_np::mls_vertex_attribute_map_t>::value;
 
-  clear(mesh);
+  internal::clear_mesh(mesh);
   Meshing_report local_report;
   Meshing_report& out = options.report ? *options.report : local_report;
   out = Meshing_report();
   const auto fail = [&](const char* why) {
-    clear(mesh);
+    internal::clear_mesh(mesh);
     out.failure = why;
     return false;
   };
@@ -153,9 +164,11 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
      (options.space == Meshing_options::Space::WEDGE || options.space == Meshing_options::Space::MIXED))
     return fail("Levin's operator takes the plane or quadratic space only");
 
-  // 1. the finite points (and normals), oriented normals when none is given
+  // 1. the finite points (and normals and attributes), oriented normals when none is given
   const auto point_map = NP_helper::get_const_point_map(points, np);
   std::vector<Item> items;
+  std::vector<double> attributes; // `channels` per item
+  std::size_t channels = 0;
   for(const auto& v : points) {
     const Point_3 p = get(point_map, v);
     if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
@@ -164,6 +177,13 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     Vector_3 n(0, 0, 0);
     if constexpr(has_normals) n = get(get_parameter(np, internal_np::normal_map), v);
     items.emplace_back(p, n);
+    if constexpr(has_attributes) {
+      const auto& values = get(get_parameter(np, internal_np::mls_attribute_map), v);
+      const std::size_t before = attributes.size();
+      for(const auto& a : values) attributes.push_back(static_cast<double>(a));
+      if(items.size() == 1) channels = attributes.size();
+      if(attributes.size() - before != channels) return fail("the attribute values do not all have the same number of channels");
+    }
   }
   out.points = items.size();
   if(items.size() < 10) return fail("too few points");
@@ -185,8 +205,16 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.normals_by_fallback = r.oriented_by_fallback;
   }
   out.seconds_normals = since(t_normals);
+  // the sample set reads the items by index (the attributes are stored apart)
+  std::vector<std::size_t> indices(items.size());
+  for(std::size_t i = 0; i < items.size(); ++i) indices[i] = i;
+  const auto attribute_of = [&](std::size_t i) {
+    return internal::Attribute_span{attributes.data() + i * channels, attributes.data() + (i + 1) * channels};
+  };
   const auto samples = std::make_shared<const Samples>(
-    items, parameters::point_map(First_of_pair_property_map<Item>()).normal_map(Second_of_pair_property_map<Item>()));
+    indices, MLS::parameters::attribute_map(boost::make_function_property_map<std::size_t>(attribute_of))
+               .point_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].first; }))
+               .normal_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].second; })));
   Projection_options projection_options;
   projection_options.bandwidth = options.bandwidth;
   projection_options.one_sided = true;
@@ -281,6 +309,9 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.features_dropped = r.features_dropped;
     out.feature_budget_exceeded = r.feature_budget_exceeded;
     if(!r.success) return fail(r.cancelled ? "cancelled" : r.message);
+    if constexpr(has_attributes)
+      internal::interpolate_vertex_attributes<ConcurrencyTag>(function.seed_projection(), function.projected_seeds(), mesh,
+                                                            get_parameter(np, internal_np::mls_vertex_attribute_map));
     if(!report("output", 0.98, 1., 1.)) return fail("cancelled");
     return true;
   };

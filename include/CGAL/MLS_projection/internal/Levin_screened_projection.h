@@ -114,6 +114,7 @@ public:
 
   double threshold() const { return threshold_; }
   double bandwidth() const { return operator_.bandwidth(); }
+  const Weight_function& weight() const { return operator_.weight(); }
   const Samples& samples() const { return operator_.samples(); }
   const std::shared_ptr<const Samples>& shared_samples() const { return operator_.shared_samples(); }
   const Projection_options& options() const { return operator_.options(); }

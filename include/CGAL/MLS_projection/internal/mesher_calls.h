@@ -43,6 +43,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -367,8 +368,23 @@ struct Mesh_complex : Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIn
   using Mesh_complex_3_in_triangulation_3<Tr, CornerIndex, CurveIndex>::Mesh_complex_3_in_triangulation_3;
 };
 
+template <class PolygonMesh>
+auto has_clear_keeping_properties(PolygonMesh& mesh, int) -> decltype(mesh.clear_without_removing_property_maps(), std::true_type());
+template <class PolygonMesh>
+std::false_type has_clear_keeping_properties(PolygonMesh&, long);
+
 template <class Tr, class CornerIndex, class CurveIndex>
 void dump_c3t3(const Mesh_complex<Tr, CornerIndex, CurveIndex>&, std::string) {}
+
+// Empties `mesh`, keeping the property maps the caller added (a `Surface_mesh`'s `clear()` removes
+// them, and the caller's output maps, e.g. `vertex_attribute_map`, would dangle).
+template <class PolygonMesh>
+void clear_mesh(PolygonMesh& mesh) {
+  if constexpr(std::is_same<decltype(has_clear_keeping_properties(mesh, 0)), std::true_type>::value)
+    mesh.clear_without_removing_property_maps();
+  else
+    CGAL::clear(mesh);
+}
 
 template <class PolygonMesh>
 bool has_finite_vertices(const PolygonMesh& mesh) {
@@ -405,7 +421,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   namespace params = CGAL::parameters;
 
   Mesher_report report;
-  clear(mesh);
+  clear_mesh(mesh);
   Evaluation_monitor monitor;
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
@@ -486,7 +502,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   if(monitor.stop.load()) return stopped(monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
   if(!has_finite_vertices(mesh)) {
-    clear(mesh);
+    clear_mesh(mesh);
     report.message = "non-finite vertex";
     return report;
   }
@@ -511,7 +527,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
   using Surface = Implicit_surface_3<SGT, Function>;
 
   Mesher_report report;
-  clear(mesh);
+  clear_mesh(mesh);
   Evaluation_monitor monitor;
   monitor.callback = &in.callback;
   monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
@@ -538,12 +554,12 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
     facets_in_complex_2_to_triangle_mesh(c2t3, mesh);
   } catch(const Meshing_cancelled&) {
     watchdog.reset();
-    clear(mesh);
+    clear_mesh(mesh);
     report.evaluations = monitor.count.load();
     return stopped(monitor, report);
   }
   if(!has_finite_vertices(mesh)) {
-    clear(mesh);
+    clear_mesh(mesh);
     report.message = "non-finite vertex";
     return report;
   }
