@@ -10,6 +10,7 @@
 #include <CGAL/MLS_projection/Meshing_options.h>
 
 #include <mls_tools/arguments.h>
+#include <mls_tools/attributes.h>
 #include <mls_tools/builtin_solid.h>
 #include <mls_tools/errors.h>
 #include <mls_tools/mesh_job.h>
@@ -29,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -94,10 +96,11 @@ mls_tools::Argument_parser make_parser(Settings& s) {
                (void)mls_tools::point_format(v); // an unknown extension is a usage error
                s.input = v;
              });
-  parser.add("--output", "O", std::string("output mesh, .off (default: ") + default_output + ")",
+  parser.add("--output", "O", std::string("output mesh, .off or .ply (default: ") + default_output + ")",
              [&s](const std::string& v) {
                const std::string ext = mls_tools::lower_extension(v);
-               if(ext != ".off") throw Usage_error("unknown extension '" + ext + "' of output '" + v + "' (expected .off)");
+               if(ext != ".off" && ext != ".ply")
+                 throw Usage_error("unknown extension '" + ext + "' of output '" + v + "' (expected .off or .ply)");
                s.output = v;
              });
   parser.add("--operator", "levin|unified", "projection operator (default: unified)",
@@ -168,8 +171,10 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "the mesh is the same, byte for byte, for any number of threads. Mesh_3's own refinement is\n"
        "sequential unless --parallel-mesher is given; its output then varies from run to run.\n"
        "\n"
-       "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6, .ply and .off\n"
-       "give their vertices (normals when present). Without normals, normals are estimated and\n"
+       "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6 and then any\n"
+       "attribute values, .ply and .off give their vertices (normals when present; a .ply file's\n"
+       "other vertex properties, such as red green blue alpha intensity, are attributes).\n"
+       "Without normals, normals are estimated and\n"
        "oriented (PCA, minimum spanning forest, votes of the free space around the points).\n"
        "A 2D input is an error.\n"
        "Without --input, the input is the built-in solid: the box [-1,1] x [-0.6,0.6] x [-0.4,0.4]\n"
@@ -178,8 +183,11 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "edges, the fillet's two end arcs, the bore's two rims), 6 corners, sampled noiselessly at\n"
        "spacing 0.03 (11810 points, fixed seed) with its exact normals.\n"
        "\n"
-       "Output: an OFF triangle mesh, written to a temporary file renamed at the end (no file is\n"
-       "left on an error). The output path is checked before any work.\n"
+       "Output: a triangle mesh, .ply (ASCII, with the input's attributes per vertex) or .off (COFF\n"
+       "with the vertex colours when the attributes are red green blue [alpha] only, otherwise\n"
+       "geometry only). Each vertex's attributes are the weighted means of the input points' around\n"
+       "it, on its own face of a crease (see the manual). Written to a temporary file renamed at\n"
+       "the end (no file is left on an error). The output path is checked before any work.\n"
        "\n"
        "Progress bars on stderr (when it is a terminal and without --quiet) for the long stages; the\n"
        "last line of stderr is the summary: points, operator/space, mesher, seconds, vertices,\n"
@@ -199,6 +207,47 @@ Options::Space choose_space(const Settings& s) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Writes `mesh` as PLY (with every attribute channel) or OFF (COFF when the channels are colours
+// only, geometry only otherwise), with 17 digits. Returns what the summary line adds: which
+// attributes were written or left out.
+std::string write_mesh(std::ostream& os, const Mesh& mesh, const mls_tools::Attribute_channels& channels, bool ply) {
+  const auto attributes = mesh.property_map<Mesh::Vertex_index, std::vector<double>>(mls_tools::vertex_attributes_property);
+  const bool has = !channels.empty() && attributes.second;
+  const bool colours = has && mls_tools::are_colours_only(channels);
+  os << std::setprecision(17);
+  if(ply) {
+    os << "ply\nformat ascii 1.0\nelement vertex " << mesh.number_of_vertices()
+       << "\nproperty double x\nproperty double y\nproperty double z\n";
+    if(has) mls_tools::write_ply_properties(os, channels);
+    os << "element face " << mesh.number_of_faces() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  } else {
+    os << (colours ? "COFF\n" : "OFF\n") << mesh.number_of_vertices() << ' ' << mesh.number_of_faces() << " 0\n";
+  }
+  // the vertices are numbered in order (the mesher's output has no removed element)
+  std::map<Mesh::Vertex_index, std::size_t> number;
+  for(const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    number.emplace(v, number.size());
+    os << p.x() << ' ' << p.y() << ' ' << p.z();
+    if(has && (ply || colours)) {
+      const auto& a = attributes.first[v];
+      for(std::size_t k = 0; k < channels.size(); ++k) mls_tools::write_attribute(os << ' ', channels[k], a[k]);
+      if(!ply && channels.size() == 3) os << " 255"; // COFF: alpha
+    }
+    os << '\n';
+  }
+  for(const auto f : mesh.faces()) {
+    os << "3";
+    for(const auto v : vertices_around_face(mesh.halfedge(f), mesh)) os << ' ' << number.at(v);
+    os << '\n';
+  }
+  if(!has) return "";
+  std::string names;
+  for(const auto& c : channels) names += (names.empty() ? "" : " ") + c.name;
+  if(ply || colours) return " (vertex attributes: " + names + ")";
+  return " (vertex attributes " + names + " not written: OFF holds colours only, use a .ply output)";
+}
+
 // Checks of the output mesh.
 
 /// Rejects a planar set: it bounds no volume, and the meshers would refine the plane's patch
@@ -297,18 +346,20 @@ int run(int argc, char** argv) {
   Stage_progress progress(!s.quiet && mls_tools::stderr_is_terminal());
   options.stage_progress = [&progress](const char* stage, double fraction) { progress(stage, fraction); };
 
-  std::vector<mls_tools::Point_with_normal> points;
-  points.reserve(input.size());
+  mls_tools::Mesh_input job;
+  job.points.reserve(input.size());
   for(std::size_t i = 0; i < input.size(); ++i) {
     const auto& p = input.points[i];
     const auto n = input.has_normals ? input.normals[i] : std::array<double, 3>{0., 0., 0.};
-    points.emplace_back(K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2]));
+    job.points.emplace_back(K::Point_3(p[0], p[1], p[2]), K::Vector_3(n[0], n[1], n[2]));
   }
+  job.channels = input.channels.size();
+  job.attributes = input.attributes;
   CGAL::MLS::Meshing_report report;
   options.report = &report;
   Mesh mesh;
-  const bool ok = input.has_normals ? mls_tools::reconstruct_with_normals(points, mesh, options)
-                                    : mls_tools::reconstruct_without_normals(points, mesh, options);
+  const bool ok = input.has_normals ? mls_tools::reconstruct_with_normals(job, mesh, options)
+                                    : mls_tools::reconstruct_without_normals(job, mesh, options);
   progress.finish();
   if(!ok || mesh.number_of_faces() == 0)
     throw Input_error("meshing " + input_name + " failed: " + (*report.failure ? report.failure : "no facet"));
@@ -316,20 +367,20 @@ int run(int argc, char** argv) {
   const bool closed = CGAL::is_closed(mesh);
   const bool manifold = is_manifold(mesh);
 
-  if(!CGAL::IO::write_OFF(output.stream(), mesh, CGAL::parameters::stream_precision(17)))
-    throw Input_error("error while writing '" + s.output + "'");
+  const auto written = write_mesh(output.stream(), mesh, input.channels, mls_tools::lower_extension(s.output) == ".ply");
+  if(!output.stream()) throw Input_error("error while writing '" + s.output + "'");
   output.commit();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fprintf(stderr,
                "%s: %zu points, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator, features "
                "%.1f s: %zu queries, meshing %.1f s), %zu vertices, %zu facets, %zu feature polylines, %zu corners%s, %s, %s, "
-               "output %s\n",
+               "output %s%s\n",
                tool_name, input.size(), name_of(s.op, operator_choices).c_str(),
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds,
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
-               report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str());
+               report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str(), written.c_str());
   return 0;
 }
 

@@ -119,11 +119,11 @@ mls_tools::Argument_parser make_parser(Settings& s) {
                (void)mls_tools::point_format(v); // an unknown extension is a usage error
                s.input = v;
              });
-  parser.add("--output", "O", "output file, .xyz (or .pwn in 3D) (default with the built-in input: projected.xyz)",
+  parser.add("--output", "O", "output file, .xyz (or .pwn or .ply in 3D) (default with the built-in input: projected.xyz)",
              [&s](const std::string& v) {
                const std::string ext = mls_tools::lower_extension(v);
-               if(ext != ".xyz" && ext != ".pwn")
-                 throw Usage_error("unknown extension '" + ext + "' of output '" + v + "' (expected .xyz or .pwn)");
+               if(ext != ".xyz" && ext != ".pwn" && ext != ".ply")
+                 throw Usage_error("unknown extension '" + ext + "' of output '" + v + "' (expected .xyz, .pwn or .ply)");
                s.output = v;
              });
   parser.add("--queries", "Q", "points to project, same dimension as the input (default: the input points)",
@@ -214,14 +214,19 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "F is written like the output (temporary file, renamed at the end).\n"
        "\n"
        "Input: .xyz holds 2 (x y), 3 (x y z), 4 (x y nx ny) or 6 (x y z nx ny nz) numbers per line,\n"
-       "blank lines and lines starting with # are skipped; .pwn holds 6 (x y z nx ny nz); .ply and .off\n"
-       "give their vertices (3D, normals when present). The input decides the dimension; the queries\n"
+       "blank lines and lines starting with # are skipped; .pwn holds 6 (x y z nx ny nz) and then any\n"
+       "attribute values; .ply and .off give their vertices (3D, normals when present; a .ply file's\n"
+       "other vertex properties, such as red green blue alpha intensity, are attributes). The input\n"
+       "decides the dimension; the queries\n"
        "must have the same. Input normals only orient the output normals.\n"
        "Without --input, the input is a built-in noisy torus (R = 1, r = 0.4, 20000 points uniform by\n"
        "area, Gaussian noise sigma = 0.005, fixed seed: the same points on every run, with their exact\n"
        "normals) and the output defaults to projected.xyz.\n"
        "\n"
-       "Output: one line per query, in query order: x y [z] nx ny [nz], 17 significant digits. A query\n"
+       "Output: one line per query, in query order: x y [z] nx ny [nz], 17 significant digits, then\n"
+       "the input's attributes at the projected point (weighted means of the input points' around it,\n"
+       "on its own face of a crease; see the manual), in the input's types; .ply is ASCII PLY with\n"
+       "the same vertex lines (properties x y z nx ny nz and the attributes' names). A query\n"
        "whose projection fails keeps its position with a null normal, and is counted as failed in the\n"
        "summary line printed on stderr. The output is written to a temporary file renamed at the end.\n"
        "\n"
@@ -275,8 +280,9 @@ int run(int argc, char** argv) {
   const Point_cloud input = read_input(s.input);
   const std::string input_name = s.input.empty() ? "the built-in torus" : "'" + s.input + "'";
   const int D = input.dimension;
-  if(D == 2 && mls_tools::lower_extension(s.output) == ".pwn")
-    throw Usage_error("a .pwn output holds 3D points, but the input is 2D: use .xyz");
+  const std::string output_format = mls_tools::lower_extension(s.output);
+  if(D == 2 && output_format != ".xyz")
+    throw Usage_error("a " + output_format + " output holds 3D points, but the input is 2D: use .xyz");
   const Implementation& implementation = s.op->rows[D - 2][space];
   mls_tools::check_point_cloud(input, implementation.minimum_points(), input_name);
 
@@ -294,8 +300,17 @@ int run(int argc, char** argv) {
   if(s.threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
 #endif
 
+  if(output_format == ".ply") {
+    output.stream() << "ply\nformat ascii 1.0\nelement vertex " << queries.size()
+                    << "\nproperty double x\nproperty double y\nproperty double z\n"
+                       "property double nx\nproperty double ny\nproperty double nz\n";
+    mls_tools::write_ply_properties(output.stream(), input.channels);
+    output.stream() << "end_header\n";
+  }
   const mls_tools::Projection_job job{input.points,
                                      input.has_normals ? &input.normals : nullptr,
+                                     input.channels,
+                                     input.attributes,
                                      queries.points,
                                      s.options,
                                      !s.quiet && mls_tools::stderr_is_terminal(),

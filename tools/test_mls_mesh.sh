@@ -144,7 +144,7 @@ group_errors() {
   expect_error "zero --threads" 2 "--threads|integer" -- --input s.xyz --threads 0
   expect_error "levin with the wedge space" 2 "levin|wedge|plane|quadratic" -- --input s.xyz --operator levin --space wedge
   expect_error "levin with the mixed space" 2 "levin|mixed" -- --input s.xyz --operator levin --space mixed
-  expect_error "output extension" 2 "extension|.stl|.off" -- --input s.xyz --output m.stl
+  expect_error "output extension" 2 "extension|.stl|.off|.ply" -- --input s.xyz --output m.stl
   expect_error "input extension" 2 "extension|.txt" -- --input s.txt
   expect_error "missing input" 1 "missing.xyz|no such file" -- --input missing.xyz
   awk 'BEGIN { for(i = 0; i < 50; i++) printf "%.17g %.17g\n", cos(i), sin(i) }' >"$DIR/circle.xyz"
@@ -206,6 +206,56 @@ group_meshing() {
         fail "box, defaults, 1 thread" "the mesh differs from the one of all threads"
     fi
   fi
+  # Attributes: the same box as PLY with one colour per face (and normals). The .ply output holds
+  # the colours per vertex; each vertex on one face only (one coordinate at +-0.5) takes exactly
+  # that face's colour, a vertex on an edge one of its two faces' (the wedge fan's faces keep the
+  # colours apart); .off gives COFF with the same colours; without attributes, a .ply output
+  # holds none.
+  awk 'BEGIN { print "ply"; print "format ascii 1.0"; print "element vertex 600"
+    print "property double x"; print "property double y"; print "property double z"
+    print "property double nx"; print "property double ny"; print "property double nz"
+    print "property uchar red"; print "property uchar green"; print "property uchar blue"; print "end_header" }' >"$DIR/cbox.ply"
+  awk 'BEGIN { split("255 0 0 0 255 0 0 0 255 255 255 0 0 255 255 255 0 255", c, " ") }
+    { f = ($4 != 0) ? ($4 > 0 ? 1 : 0) : ($5 != 0) ? ($5 > 0 ? 3 : 2) : ($6 > 0 ? 5 : 4)
+      print $0, c[3 * f + 1], c[3 * f + 2], c[3 * f + 3] }' "$DIR/box.pwn" >>"$DIR/cbox.ply"
+  # colour_check FILE FIRST_LINE: the vertex lines (FIRST_LINE on, x y z r g b) against the faces.
+  colour_check() {
+    awk -v first="$2" 'BEGIN { split("255 0 0 0 255 0 0 0 255 255 255 0 0 255 255 255 0 255", c, " ") }
+      NR == first - 1 && /^COFF|^OFF/ { next } NR < first { next } NF < 6 || $1 == 3 { next }
+      { on = 0; good = 0; for(a = 0; a < 3; a++) { x = $(a + 1); if(x > 0.5 - 1e-3 || x < -0.5 + 1e-3) { on++
+          f = 2 * a + (x > 0 ? 1 : 0); if($4 == c[3 * f + 1] && $5 == c[3 * f + 2] && $6 == c[3 * f + 3]) good = 1 } }
+        if(on > 0 && on < 3) { n++; if(!good) bad++ } }
+      END { printf "%d %d\n", n, bad }' "$1"
+  }
+  run --input cbox.ply --output cbox.ply.out.ply --quiet
+  if [ "$RC" -eq 0 ] && grep -q "(vertex attributes: red green blue)" "$TMP/stderr"; then
+    local header_lines counts
+    header_lines=$(awk '/^end_header/ { print NR; exit }' "$DIR/cbox.ply.out.ply")
+    counts=$(colour_check "$DIR/cbox.ply.out.ply" $((header_lines + 1)))
+    if grep -q "^property uchar red" "$DIR/cbox.ply.out.ply" && [ "${counts#* }" = "0" ] && [ "${counts% *}" -gt 100 ]; then
+      pass "coloured box, .ply: ${counts% *} face and edge vertices, each of its face's colour"
+    else
+      fail "coloured box, .ply" "vertices checked and wrong: $counts"
+    fi
+  else
+    fail "coloured box, .ply" "exit $RC: $ERR"
+  fi
+  run --input cbox.ply --output cbox.off --quiet
+  if [ "$RC" -eq 0 ] && [ "$(head -n 1 "$DIR/cbox.off")" = "COFF" ]; then
+    local counts
+    counts=$(colour_check "$DIR/cbox.off" 3)
+    [ "${counts#* }" = "0" ] && [ "${counts% *}" -gt 100 ] && pass "coloured box, .off: COFF, ${counts% *} vertices of their face's colour" ||
+      fail "coloured box, .off" "vertices checked and wrong: $counts"
+  else
+    fail "coloured box, .off" "exit $RC, first line $(head -n 1 "$DIR/cbox.off"): $ERR"
+  fi
+  run --input box.pwn --output plain.ply --quiet
+  if [ "$RC" -eq 0 ] && grep -q "^element face" "$DIR/plain.ply" && ! grep -q "^property uchar" "$DIR/plain.ply"; then
+    pass "no attributes: the .ply output has none"
+  else
+    fail "no attributes" "exit $RC, header: $(head -n 8 "$DIR/plain.ply" | tr '\n' ' ')"
+  fi
+
   # Replacing an existing output.
   echo "old content" >"$DIR/replace.off"
   run --size 0.2 --distance 0.03 --operator levin --quiet --output replace.off --threads 1

@@ -212,7 +212,7 @@ errors_group() {
   expect_error "unknown input extension" 2 "extension|.txt" --input points.txt --output out.xyz
   expect_error "input without extension" 2 "extension" --input points --output out.xyz
   expect_error "unknown queries extension" 2 "extension|.csv" --input "$S" --queries q.csv --output out.xyz
-  expect_error "unknown output extension" 2 "extension|.ply" --input "$S" --output out.ply
+  expect_error "unknown output extension" 2 "extension|.stl" --input "$S" --output out.stl
   new_dir
   circle 50 >"$DIR/circle.xyz"
   expect_error ".pwn output of a 2D input" 2 "pwn|2D" --input circle.xyz --output out.pwn
@@ -243,7 +243,7 @@ errors_group() {
   printf '1\n' >"$DIR/one.xyz"
   expect_error "one column" 1 "one.xyz:1|1 numbers" --input one.xyz --output out.xyz
   sphere 20 >"$DIR/three.pwn"
-  expect_error ".pwn with 3 columns" 1 "three.pwn:1|expected 6" --input three.pwn --output out.xyz
+  expect_error ".pwn with 3 columns" 1 "three.pwn:1|expected at least 6" --input three.pwn --output out.xyz
   sphere 3 >"$DIR/few.xyz"
   expect_error "too few points (3D levin quadratic)" 1 "few.xyz|too few|6" --input few.xyz --output out.xyz --operator levin
   sphere 3 >"$DIR/few3.xyz"
@@ -360,6 +360,34 @@ print $o pack("C${i}3f", 3, 0, 1, 2, 0.5), pack("C${i}4f", 4, 0, 1, 2, 3, 0.5);'
     pass "binary .ply read (doubles, both byte orders)"
   else
     fail "binary .ply read (doubles, both byte orders)" "little and big endian differ, or equal the float .ply"
+  fi
+  # Attributes: a .ply input with a float intensity (the height z, a ramp) and a uchar red (200
+  # everywhere). The .ply output declares both after the normal; at each projected point the
+  # intensity is the weighted mean of the ramp around it (within 3e-2 of its z: a weighted mean
+  # over the curved sphere is biased by about h^2/2, h = 0.2 here) and red is 200 exactly; the .xyz
+  # output has the same two columns after the normal. A .pwn's 7th column is an attribute.
+  { printf 'ply\nformat ascii 1.0\nelement vertex 1500\nproperty double x\nproperty double y\nproperty double z\n'
+    printf 'property float intensity\nproperty uchar red\nend_header\n'
+    sphere 1500 | awk '{ print $1, $2, $3, $3, 200 }'; } >"$DIR/ramp.ply"
+  if run_ok "attributes, .ply output" --operator levin --input ramp.ply --output ramp_out.ply; then
+    local e
+    e=$(awk 'f { d = $7 - $3; if(d < 0) d = -d; if(d > m) m = d; if($8 != 200) bad++; n++ } /^end_header/ { f = 1 }
+      END { if(n != 1500 || bad) print "bad"; else printf "%.3g\n", m }' "$DIR/ramp_out.ply")
+    if grep -q "^property float intensity" "$DIR/ramp_out.ply" && grep -q "^property uchar red" "$DIR/ramp_out.ply" &&
+       awk -v e="$e" 'BEGIN { exit !(e + 0 == e && e < 3e-2) }'; then
+      pass "attributes, .ply output: intensity within $e of the ramp, red 200"
+    else
+      fail "attributes, .ply output" "intensity error $e, header $(head -n 12 "$DIR/ramp_out.ply" | tr '\n' ' ')"
+    fi
+  fi
+  if run_ok "attributes, .xyz output" --operator levin --input ramp.ply --output ramp_out.xyz; then
+    awk 'NF != 8 || $8 != 200 { exit 1 }' "$DIR/ramp_out.xyz" && pass "attributes, .xyz output: 8 columns, red 200" ||
+      fail "attributes, .xyz output" "$(head -n 1 "$DIR/ramp_out.xyz")"
+  fi
+  sphere 1500 1 | awk '{ print $0, 7.5 }' >"$DIR/seven.pwn"
+  if run_ok "attributes, .pwn column" --operator levin --input seven.pwn --output seven_out.xyz; then
+    awk 'NF != 7 || $7 - 7.5 > 1e-12 || 7.5 - $7 > 1e-12 { exit 1 }' "$DIR/seven_out.xyz" && pass "attributes, .pwn column: carried as 7.5" ||
+      fail "attributes, .pwn column" "$(head -n 1 "$DIR/seven_out.xyz")"
   fi
 }
 

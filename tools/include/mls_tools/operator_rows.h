@@ -13,6 +13,7 @@
 #include <mls_tools/projection_job.h>
 
 #include <CGAL/MLS_projection/Closest_point_projection.h>
+#include <CGAL/MLS_projection/interpolate_attributes.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
@@ -24,10 +25,12 @@
 #include <CGAL/property_map.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <functional>
 #include <iomanip>
+#include <iterator>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -57,26 +60,30 @@ std::size_t minimum_points() {
 }
 
 /// Projects the queries with `Operator` (any operator of the package, constructible from a
-/// shared sample set and the options) and writes `x y [z] nx ny [nz]` per query, in order, and
-/// `x y [z] dx dy [dz]` to `job.features` per projection on a crease or apex.
+/// shared sample set and the options) and writes `x y [z] nx ny [nz]` per query, in order,
+/// followed by the attributes interpolated at the projection (`interpolate_attributes()`) when
+/// the input has some, and `x y [z] dx dy [dz]` to `job.features` per projection on a crease or apex.
 template <class Operator>
 Projection_outcome run_operator(const Projection_job& job) {
   constexpr int D = Operator::dimension;
   using T = Point_types<D>;
-  using Sample = std::pair<typename T::Point, typename T::Vector>;
   using Samples = typename Operator::Samples;
-  using Point_map = CGAL::First_of_pair_property_map<Sample>;
-  using Normal_map = CGAL::Second_of_pair_property_map<Sample>;
 
-  std::vector<Sample> samples;
-  samples.reserve(job.points.size());
-  for(std::size_t i = 0; i < job.points.size(); ++i)
-    samples.emplace_back(T::point(job.points[i]),
-                         job.normals ? T::vector((*job.normals)[i]) : typename T::Vector(CGAL::NULL_VECTOR));
+  // The sample set reads the input by index.
+  std::vector<std::size_t> indices(job.points.size());
+  for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
+  const std::size_t channels = job.channels.size();
+  const auto point_map = boost::make_function_property_map<std::size_t>([&](std::size_t i) { return T::point(job.points[i]); });
+  const auto attribute_map = boost::make_function_property_map<std::size_t>([&](std::size_t i) {
+    const auto first = job.attributes.begin() + std::ptrdiff_t(i * channels);
+    return std::vector<double>(first, first + std::ptrdiff_t(channels));
+  });
+  const auto np = CGAL::MLS::parameters::attribute_map(attribute_map).point_map(point_map);
   // The normals only orient the results; the sample set's type does not depend on them.
-  const auto shared = job.normals
-    ? std::make_shared<const Samples>(samples, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))
-    : std::make_shared<const Samples>(samples, CGAL::parameters::point_map(Point_map()));
+  const auto shared =
+    job.normals ? std::make_shared<const Samples>(indices, np.normal_map(boost::make_function_property_map<std::size_t>(
+                                                             [&](std::size_t i) { return T::vector((*job.normals)[i]); })))
+                : std::make_shared<const Samples>(indices, np);
   const Operator op(shared, job.options);
 
   std::vector<typename T::Point> queries;
@@ -88,11 +95,12 @@ Projection_outcome run_operator(const Projection_job& job) {
   std::ostream& out = job.out;
   out << std::setprecision(17);
   if(job.features) *job.features << std::setprecision(17);
-  // A std::function, because the output iterator must be assignable (a capturing lambda is not).
-  const std::function<void(const typename Operator::Result&)> write = [&](const typename Operator::Result& r) {
+  const auto write_result = [&](const typename Operator::Result& r, const double* attributes) {
     if(!r.is_success()) ++outcome.failed; // the result keeps the query and has a null normal
     for(int k = 0; k < D; ++k) out << r.point[k] << ' ';
-    for(int k = 0; k < D; ++k) out << r.normal[k] << (k + 1 < D ? ' ' : '\n');
+    for(int k = 0; k < D; ++k) out << r.normal[k] << (k + 1 < D ? " " : "");
+    for(std::size_t k = 0; attributes && k < channels; ++k) write_attribute(out << ' ', job.channels[k], attributes[k]);
+    out << '\n';
     if(r.is_on_feature) {
       ++outcome.on_feature;
       if(job.features) { // the direction is null at an apex (+ 0. writes a -0 as 0)
@@ -102,9 +110,26 @@ Projection_outcome run_operator(const Projection_job& job) {
     }
   };
   Progress_bar bar("mls_project: projecting", job.show_progress);
-  CGAL::MLS::project_points<CGAL::Parallel_if_available_tag>(op, queries, boost::make_function_output_iterator(write),
+  if(channels == 0) {
+    // A std::function, because the output iterator must be assignable (a capturing lambda is not).
+    const std::function<void(const typename Operator::Result&)> write = [&](const typename Operator::Result& r) {
+      write_result(r, nullptr);
+    };
+    CGAL::MLS::project_points<CGAL::Parallel_if_available_tag>(op, queries, boost::make_function_output_iterator(write),
+                                                               CGAL::parameters::callback(bar.callback()));
+    bar.finish();
+    return outcome;
+  }
+  std::vector<typename Operator::Result> results;
+  results.reserve(queries.size());
+  CGAL::MLS::project_points<CGAL::Parallel_if_available_tag>(op, queries, std::back_inserter(results),
                                                              CGAL::parameters::callback(bar.callback()));
   bar.finish();
+  std::vector<double> values(results.size() * channels);
+  CGAL::MLS::internal::for_each_index<CGAL::Parallel_if_available_tag>(0, results.size(), 64, [&](std::size_t i) {
+    CGAL::MLS::interpolate_attributes(op, results[i], values.begin() + std::ptrdiff_t(i * channels));
+  });
+  for(std::size_t i = 0; i < results.size(); ++i) write_result(results[i], values.data() + i * channels);
   return outcome;
 }
 

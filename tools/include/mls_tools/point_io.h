@@ -8,6 +8,9 @@
 //    parse: here every malformed line is an error that names its line number.
 //  - .ply and .off: vertices only (faces are ignored), always 3D, with CGAL's readers
 //    (CGAL::IO::read_PLY, CGAL::IO::read_OFF into a CGAL::Point_set_3); normals when present.
+//  - attributes: a .ply file's other scalar vertex properties (red, green, blue, alpha,
+//    intensity, ...), and a .pwn file's columns after the sixth (named value1, value2, ...;
+//    an .xyz file's columns are not: 6 numbers are a point and its normal).
 //    A .ply file is checked first (ply_check.h): CGAL's reader trusts malformed files.
 // Every error is an `Input_error` (or a `Usage_error` for an unknown extension) with a one-line
 // message. `check_point_cloud` rejects sets no MLS operator can work on.
@@ -16,6 +19,7 @@
 #define MLS_TOOLS_POINT_IO_H
 
 #include <mls_tools/arguments.h>
+#include <mls_tools/attributes.h>
 #include <mls_tools/errors.h>
 #include <mls_tools/ply_check.h>
 
@@ -30,6 +34,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +50,8 @@ struct Point_cloud {
   bool has_normals = false;
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<double, 3>> normals; ///< empty, or one per point
+  Attribute_channels channels;                 ///< the attribute channels (often none)
+  std::vector<double> attributes;              ///< `channels.size()` values per point
   std::size_t size() const { return points.size(); }
 };
 
@@ -111,9 +118,11 @@ inline Point_cloud read_xyz(const std::string& path, bool is_pwn) {
     }
     if(columns == 0) {
       columns = values.size();
-      if(is_pwn ? columns != 6 : (columns != 2 && columns != 3 && columns != 4 && columns != 6))
+      if(is_pwn ? columns < 6 : (columns != 2 && columns != 3 && columns != 4 && columns != 6))
         throw Input_error(where + "found " + std::to_string(columns) + " numbers, expected " +
-                          (is_pwn ? "6 (x y z nx ny nz)" : "2 (x y), 3 (x y z), 4 (x y nx ny) or 6 (x y z nx ny nz)"));
+                          (is_pwn ? "at least 6 (x y z nx ny nz, then attributes)"
+                                  : "2 (x y), 3 (x y z), 4 (x y nx ny) or 6 (x y z nx ny nz)"));
+      for(std::size_t k = 6; is_pwn && k < columns; ++k) cloud.channels.push_back({"value" + std::to_string(k - 5), "double"});
       cloud.dimension = (columns == 2 || columns == 4) ? 2 : 3;
       cloud.has_normals = (columns == 4 || columns == 6);
     } else if(values.size() != columns) {
@@ -128,6 +137,7 @@ inline Point_cloud read_xyz(const std::string& path, bool is_pwn) {
       for(int k = 0; k < D; ++k) n[k] = values[D + k];
       cloud.normals.push_back(n);
     }
+    cloud.attributes.insert(cloud.attributes.end(), values.begin() + std::min<std::size_t>(values.size(), 2 * D), values.end());
   }
   if(is.bad()) throw Input_error("error while reading " + quote(path));
   if(cloud.points.empty()) throw Input_error(quote(path) + " contains no points");
@@ -171,6 +181,45 @@ inline long declared_off_vertices(const std::string& path) {
     }
   }
   return -1;
+}
+
+/// The PLY type name of a property of a `Point_set_3` read from PLY ("" when not a number).
+template <class T> const char* ply_type_name();
+template <> inline const char* ply_type_name<std::int8_t>() { return "char"; }
+template <> inline const char* ply_type_name<std::uint8_t>() { return "uchar"; }
+template <> inline const char* ply_type_name<std::int16_t>() { return "short"; }
+template <> inline const char* ply_type_name<std::uint16_t>() { return "ushort"; }
+template <> inline const char* ply_type_name<std::int32_t>() { return "int"; }
+template <> inline const char* ply_type_name<std::uint32_t>() { return "uint"; }
+template <> inline const char* ply_type_name<float>() { return "float"; }
+template <> inline const char* ply_type_name<double>() { return "double"; }
+
+/// Appends the property `name` of `set` to the cloud's channels and its values to `values` (one
+/// vector per channel) when its type is `T`; true when it is.
+template <class T, class Set>
+bool read_channel(const Set& set, const std::string& name, Point_cloud& cloud, std::vector<std::vector<double>>& values) {
+  const auto found = set.template property_map<T>(name);
+  if(!found.second) return false;
+  cloud.channels.push_back({name, ply_type_name<T>()});
+  values.emplace_back();
+  for(auto it = set.begin(); it != set.end(); ++it) values.back().push_back(static_cast<double>(get(found.first, *it)));
+  return true;
+}
+
+/// The scalar properties of a point set read from PLY, other than the point and its normal.
+template <class Set>
+void read_channels(const Set& set, Point_cloud& cloud) {
+  std::vector<std::vector<double>> values;
+  for(const std::string& name : set.properties()) {
+    if(name == "index" || name == "point" || name == "normal") continue;
+    read_channel<std::int8_t>(set, name, cloud, values) || read_channel<std::uint8_t>(set, name, cloud, values) ||
+      read_channel<std::int16_t>(set, name, cloud, values) || read_channel<std::uint16_t>(set, name, cloud, values) ||
+      read_channel<std::int32_t>(set, name, cloud, values) || read_channel<std::uint32_t>(set, name, cloud, values) ||
+      read_channel<float>(set, name, cloud, values) || read_channel<double>(set, name, cloud, values);
+  }
+  cloud.attributes.reserve(values.size() * set.size());
+  for(std::size_t i = 0; i < set.size(); ++i)
+    for(const auto& channel : values) cloud.attributes.push_back(channel[i]);
 }
 
 /// .ply and .off, with CGAL's readers.
@@ -217,6 +266,11 @@ inline Point_cloud read_with_cgal(const std::string& path, Point_format format) 
     for(int k = 0; k < 3; ++k)
       if(!std::isfinite(cloud.points[i][k]) || (cloud.has_normals && !std::isfinite(cloud.normals[i][k])))
         throw Input_error(quote(path) + ": vertex " + std::to_string(i + 1) + " has a non-finite coordinate");
+  if(format == Point_format::PLY) read_channels(set, cloud);
+  for(std::size_t i = 0; i < cloud.attributes.size(); ++i)
+    if(!std::isfinite(cloud.attributes[i]))
+      throw Input_error(quote(path) + ": vertex " + std::to_string(i / cloud.channels.size() + 1) + " has a non-finite " +
+                        cloud.channels[i % cloud.channels.size()].name);
   return cloud;
 }
 

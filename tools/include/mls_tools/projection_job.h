@@ -11,6 +11,7 @@
 #define MLS_TOOLS_PROJECTION_JOB_H
 
 #include <CGAL/MLS_projection/Projection_options.h>
+#include <mls_tools/attributes.h>
 
 #include <array>
 #include <cstddef>
@@ -27,10 +28,12 @@ using Coordinates = std::vector<std::array<double, 3>>; // x y [z], one per poin
 struct Projection_job {
   const Coordinates& points;
   const Coordinates* normals; // one per point, or null: they only orient the results
+  const Attribute_channels& channels;     // the input's attribute channels (often none)
+  const std::vector<double>& attributes;  // channels.size() per point
   const Coordinates& queries;
   const CGAL::MLS::Projection_options& options;
   bool show_progress;
-  std::ostream& out;       // x y [z] nx ny [nz] per query, in order
+  std::ostream& out;       // x y [z] nx ny [nz] [attributes] per query, in order
   std::ostream* features;  // x y [z] dx dy [dz] per projection on a crease or apex, or null
 };
 
