@@ -170,6 +170,9 @@ void attribute_weights(const Projection& projection, const typename Projection::
 /// to `x`.
 ///
 /// \tparam Projection a projection operator of this package
+/// \param projection the operator whose samples hold the attributes
+/// \param fit a result of `projection` (its frame, coefficients and energy)
+/// \param x the point at which the attributes are wanted, on or near the fit
 /// \param out an output iterator accepting `double`, written `number_of_attributes()` times
 /// \return `fit.is_success()`
 template <class Projection, class OutputIterator>
