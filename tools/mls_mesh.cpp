@@ -174,8 +174,8 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "Input: .xyz holds 3 (x y z) or 6 (x y z nx ny nz) numbers per line, .pwn 6 and then any\n"
        "attribute values, .ply and .off give their vertices (normals when present; a .ply file's\n"
        "other vertex properties, such as red green blue alpha intensity, are attributes).\n"
-       "Without normals, normals are estimated and\n"
-       "oriented (PCA, minimum spanning forest, votes of the free space around the points).\n"
+       "Without normals, normals are estimated and oriented (PCA, minimum spanning forest, votes\n"
+       "of the free space around the points).\n"
        "A 2D input is an error.\n"
        "Without --input, the input is the built-in solid: the box [-1,1] x [-0.6,0.6] x [-0.4,0.4]\n"
        "with its edge at x = 1, z = 0.4 rounded (a quarter-cylinder fillet of radius 0.25) and a\n"
@@ -223,8 +223,7 @@ std::string write_mesh(std::ostream& os, const Mesh& mesh, const mls_tools::Attr
   } else {
     os << (colours ? "COFF\n" : "OFF\n") << mesh.number_of_vertices() << ' ' << mesh.number_of_faces() << " 0\n";
   }
-  // the vertices are numbered in order (the mesher's output has no removed element)
-  std::map<Mesh::Vertex_index, std::size_t> number;
+  std::map<Mesh::Vertex_index, std::size_t> number; // the vertices' numbers in the file
   for(const auto v : mesh.vertices()) {
     const auto& p = mesh.point(v);
     number.emplace(v, number.size());
