@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <utility>
 #include <vector>
@@ -729,6 +730,8 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     // bias of -4% at this noise), and the first quartile of 400 neighbourhoods varies by about 2%
     MLS_CHECK(ratio >= 0.9 && ratio <= 1.05);
     MLS_CHECK_NEAR(PM.screening_threshold(), 2.5 * PM.noise_variance(), 1e-12 * PM.screening_threshold());
+    // sigma is about h / 9, above h / 20: the fan is fitted over the whole bandwidth
+    MLS_CHECK(PM.sharp_bandwidth() == PM.bandwidth());
   }
   {
     const auto pts = cube(0.1);
@@ -737,6 +740,10 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     std::cout << "  coarse cube: estimated variance " << PM.noise_variance() << " (h = " << h << ")\n";
     MLS_CHECK_LE(PM.noise_variance(), 1e-20);
     MLS_CHECK_NEAR(PM.screening_threshold(), (0.01 * h) * (0.01 * h), 1e-12 * h * h);
+    // no noise: the fan's bandwidth is 0.5 h, or the floor that gives its support 33 points
+    // (about 0.59 h here: the 33rd neighbour is 1.44 times as far as the 16th, h's)
+    std::cout << "  coarse cube: sharp bandwidth " << PM.sharp_bandwidth() / h << " h" << std::endl;
+    MLS_CHECK(PM.sharp_bandwidth() >= 0.5 * h && PM.sharp_bandwidth() <= 0.7 * h);
     int fan = 0;
     for(double z : {-0.3, -0.1, 0.1, 0.3}) // near the edge x = y = 0.5
       fan += PM.project(Epick::Point_3(0.5 + 0.1 * h, 0.5 + 0.1 * h, z)).coefficients.size() == 8;
@@ -750,6 +757,29 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
               << 2.5 * PM.noise_variance() / ((0.01 * h) * (0.01 * h)) << "\n";
     MLS_CHECK_LE(2.5 * PM.noise_variance(), (0.01 * h) * (0.01 * h));
   }
+}
+
+// project_points with warm starts calls the callback from the calling thread after each block
+// it projected, with the fraction done, and writes nothing when cancelled.
+MLS_TEST(warm_started_callback_reports_progress_and_cancels) {
+  const auto pts = cube(0.025);
+  const MLS::Mixed_projection<Epick, 3> PM(pts);
+  std::vector<double> fractions;
+  std::vector<MLS::Projection_result<Epick, 3>> out;
+  const auto record = [&](bool go_on) {
+    return CGAL::parameters::callback(std::function<bool(double)>([&fractions, go_on](double f) {
+      fractions.push_back(f);
+      return go_on;
+    }));
+  };
+  MLS_CHECK(!MLS::project_points<CGAL::Parallel_if_available_tag>(PM, pts, std::back_inserter(out), record(false)));
+  MLS_CHECK(out.empty() && fractions.size() == 1);
+  fractions.clear();
+  MLS_CHECK(MLS::project_points<CGAL::Sequential_tag>(PM, pts, std::back_inserter(out), record(true)));
+  // once per block of warm_start_block queries (the last one: 1)
+  MLS_CHECK(out.size() == pts.size());
+  MLS_CHECK(fractions.size() == (pts.size() + MLS::warm_start_block - 1) / MLS::warm_start_block);
+  MLS_CHECK(std::is_sorted(fractions.begin(), fractions.end()) && fractions.back() == 1.);
 }
 
 MLS_TEST(sequential_equals_parallel_unified) {

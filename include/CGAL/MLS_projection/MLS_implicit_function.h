@@ -120,12 +120,16 @@ struct Local_fit_evaluator<Closest_point_projection<GeomTraits, Space, kind>> {
 };
 
 // The sharp fits of a mixed projection; its smooth fits are P_L's, told apart by their number of
-// coefficients (see `levin_quadratic_parameters`).
+// coefficients (see `levin_quadratic_parameters`); the sharp ones are in units of the sharp
+// operator's bandwidth.
 template <class GeomTraits, Operator_kind kind, class Sharp>
 struct Local_fit_evaluator<Mixed_projection<GeomTraits, 3, kind, Sharp>>
     : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection> {
   explicit Local_fit_evaluator(const Mixed_projection<GeomTraits, 3, kind, Sharp>& p)
-    : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection>(p.sharp_projection()) {}
+    : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection>(p.sharp_projection()),
+      sharp_h(p.sharp_bandwidth()) {}
+  double unit(double) const { return sharp_h; }
+  double sharp_h;
 };
 
 /// Wendland's \f$C^2\f$ function \f$(1-t)^4(4t+1)\f$ on \f$[0, 1]\f$, 0 beyond.
@@ -646,7 +650,7 @@ private:
       f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
       f.axes.col(2) = KT::to_eigen(r.frame.normal);
       f.origin = samples.to_local(r.frame.origin);
-      f.unit = is_levin_fit(f.count) ? 1. : Evaluator::unit(d.h);
+      f.unit = is_levin_fit(f.count) ? 1. : d.evaluator.unit(d.h);
       std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
       // the "up" normal of the fit at the projected point, and its orientation
       Closest_point<3> cp;

@@ -38,6 +38,18 @@ namespace MLS {
 ///    fan has more parameters (8 against 6 in 3D) and, on noisy smooth data, its extra freedom
 ///    lowers the energy by a small factor only, whereas at a crease the quadratic cannot follow
 ///    the data and its energy is larger by orders of magnitude.
+/// 3. <b>The sharp operator's bandwidth</b> is \f$h_s = \min(h, \max(s\,h, h_{\min}))\f$
+///    (`sharp_bandwidth()`), with
+///    \f[ s = s_0 + \lambda\,\hat\sigma / h, \f]
+///    \f$s_0 = 0.5\f$, \f$\lambda = 10\f$, and \f$h_{\min}\f$ the bandwidth whose weight support
+///    reaches, on average, the \f$3m\f$-th nearest input point, \f$m\f$ = the sharp operator's
+///    `minimum_points()` (11 in 3D): the weighted points then count as about \f$m\f$ independent
+///    ones. A fan has no bias on its own planes: its error comes from what it cannot follow within
+///    its support (a curved face next to a crease, the facets of a tessellated surface), which
+///    shrinks with the support, while noise needs the whole support to average out, and the fit
+///    needs points. So on clean data the fan is fitted over about 0.6 times the default bandwidth
+///    (some 33 points), from \f$\hat\sigma = h/20\f$ over all of it (manual, section "The Mixed
+///    Space", "The bandwidth of the fan").
 ///
 /// So the smooth parts cost one \f$\mathcal{P}_L\f$ (a few tens of microseconds) and keep its
 /// second-order accuracy, and creases and corners are reproduced by the fan. The result is the
@@ -85,9 +97,9 @@ public:
   /// level of the samples (up to 512 neighbourhoods of 12 points).
   explicit Mixed_projection(std::shared_ptr<const Samples> samples, const Projection_options& options = Projection_options(),
                             double sharp_preference = default_sharp_preference)
-    : smooth_(samples, options), sharp_(samples, with_bandwidth(options, smooth_.bandwidth())),
-      sharp_preference_(sharp_preference), noise_variance_(internal::estimate_noise_variance(*samples)),
-      threshold_(noise_threshold(bandwidth(), noise_variance_)) {
+    : smooth_(samples, options), sharp_preference_(sharp_preference),
+      noise_variance_(internal::estimate_noise_variance(*samples)), threshold_(noise_threshold(bandwidth(), noise_variance_)),
+      sharp_(samples, with_bandwidth(options, sharp_bandwidth(*samples, bandwidth(), smooth_.weight(), noise_variance_))) {
     CGAL_precondition(sharp_preference > 0 && sharp_preference <= 1);
   }
 
@@ -128,16 +140,19 @@ public:
     return sharp.energy < sharp_preference_ * smooth.energy;
   }
 
-  /// The bandwidth \f$h\f$, the weight function (both operators'), the preference factor of the sharp space, the estimated noise
-  /// variance \f$\hat\sigma^2\f$ of the samples, the noise threshold \f$\tau\f$ of the screening (a
-  /// squared length), the options, the shared sample set, and the two operators.
+  /// The bandwidth \f$h\f$ (the smooth operator's and the options'), the sharp operator's
+  /// \f$h_s\f$, the weight function (the smooth operator's), the preference factor of the sharp
+  /// space, the estimated noise variance \f$\hat\sigma^2\f$ of the samples, the noise threshold
+  /// \f$\tau\f$ of the screening (a squared length), the options, the shared sample set, and the
+  /// two operators.
   /// @{
   double bandwidth() const { return smooth_.bandwidth(); }
+  double sharp_bandwidth() const { return sharp_.bandwidth(); }
   const Weight_function& weight() const { return smooth_.weight(); }
   double sharp_preference() const { return sharp_preference_; }
   double noise_variance() const { return noise_variance_; }
   double screening_threshold() const { return threshold_; }
-  const Projection_options& options() const { return sharp_.options(); }
+  const Projection_options& options() const { return smooth_.options(); }
   const Samples& samples() const { return smooth_.samples(); }
   const std::shared_ptr<const Samples>& shared_samples() const { return smooth_.shared_samples(); }
   const Smooth_projection& smooth_projection() const { return smooth_; }
@@ -163,11 +178,22 @@ private:
     return (std::max)((rho * h) * (rho * h), kappa2 * noise_variance);
   }
 
+  // h_s of the class documentation, given h and the smooth operator's weight (0 without h).
+  static double sharp_bandwidth(const Samples& samples, double h, const Weight_function& weight, double noise_variance) {
+    constexpr double s0 = 0.5, lambda = 10;
+    const double s = s0 + lambda * std::sqrt(noise_variance) / h;
+    if(!(h > 0) || !(s < 1)) return h;
+    // the mean distance to the 3m-th neighbour, over the weight's support radius in units of h
+    const double h_min = samples.mean_kth_neighbor_distance(3 * Sharp_projection::minimum_points(), 2000) /
+                         (weight.support_radius() / h);
+    return (std::min)(h, (std::max)(s * h, h_min));
+  }
+
   Smooth_projection smooth_;
-  Sharp_projection sharp_;
   double sharp_preference_;
   double noise_variance_;
   double threshold_;
+  Sharp_projection sharp_;
 };
 
 } // namespace MLS

@@ -176,10 +176,10 @@ public:
   }
 
   /// The mean, over input points, of the distance to their `k`-th nearest other input point.
-  /// Computed on at most 20000 points taken with a regular stride (deterministic).
-  double mean_kth_neighbor_distance(std::size_t k) const {
+  /// Computed on at most `max_points` points taken with a regular stride (deterministic).
+  double mean_kth_neighbor_distance(std::size_t k, std::size_t max_points = 20000) const {
     if(points_.size() < 2) return 0.;
-    const std::size_t stride = (std::max<std::size_t>)(1, points_.size() / 20000);
+    const std::size_t stride = (std::max<std::size_t>)(1, points_.size() / (std::max<std::size_t>)(1, max_points));
     double sum = 0;
     std::size_t n = 0;
     for(std::size_t i = 0; i < points_.size(); i += stride, ++n)

@@ -21,19 +21,19 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
-// Calls `f(space, unit, is_graph)` with the function space whose member `fit` holds (told by the
-// number of its coefficients), the length unit of its frame coordinates (1, or h for the
-// closest-point operators) and whether `f` must use the space's `height()` (a graph fitted by
-// Levin's operator) or its `closest_point()`; returns false (without calling `f`) when the fit is
-// of no known space.
+// Calls `f(space, unit, is_graph, weight)` with the function space whose member `fit` holds (told
+// by the number of its coefficients), the length unit of its frame coordinates (1, or h for the
+// closest-point operators), whether `f` must use the space's `height()` (a graph fitted by
+// Levin's operator) or its `closest_point()`, and the weight function of the operator that made
+// the fit; returns false (without calling `f`) when the fit is of no known space.
 template <class Projection> struct Fit_space_visitor;
 
 template <class K, class S>
 struct Fit_space_visitor<Levin_projection<K, S>> {
   template <class Result, class F>
-  static bool visit(const Levin_projection<K, S>&, const Result& fit, F&& f) {
+  static bool visit(const Levin_projection<K, S>& p, const Result& fit, F&& f) {
     if(fit.coefficients.size() != std::size_t(S::number_of_parameters)) return false;
-    f(S(), 1., std::true_type());
+    f(S(), 1., std::true_type(), p.weight());
     return true;
   }
 };
@@ -43,7 +43,7 @@ struct Fit_space_visitor<Closest_point_projection<K, S, kind>> {
   template <class Result, class F>
   static bool visit(const Closest_point_projection<K, S, kind>& p, const Result& fit, F&& f) {
     if(fit.coefficients.size() != std::size_t(S::number_of_parameters) || !(p.bandwidth() > 0)) return false;
-    f(p.function_space(), p.bandwidth(), std::false_type());
+    f(p.function_space(), p.bandwidth(), std::false_type(), p.weight());
     return true;
   }
 };
@@ -72,8 +72,9 @@ bool on_face(const Closest_point<D>& cp, const Vec<D>& face) {
   return !cp.is_singular && cp.normal.dot(face) > 1. - 1e-6;
 }
 
-// The weights of the input points of `nbh`, gathered around `x` (local coordinates): the
-// operator's weight function centred on `x`, kept only for the points the fit explains (distance
+// The weights of the input points of `nbh`, gathered around `x` (local coordinates): the weight
+// function of the operator that made the fit (in Mixed_projection, the smooth or the sharp
+// operator's), centred on `x`, kept only for the points the fit explains (distance
 // to it at most three times its RMS residual plus h/100, and, when the samples have normals, a
 // normal within 30 degrees of the fit's at the closest point) and, on a fit with sharp features, whose
 // closest points lie on the face of the closest point of `x` (at a crease or apex: the face of
@@ -83,8 +84,10 @@ void attribute_weights(const Projection& projection, const typename Projection::
                        Neighborhood<Projection::dimension>& nbh, std::vector<double>& w) {
   constexpr int D = Projection::dimension;
   const auto& samples = projection.samples();
-  const auto& weight = projection.weight();
-  const double h = projection.bandwidth();
+  const Weight_function* fit_weight = &projection.weight();
+  Fit_space_visitor<Projection>::visit(projection, fit, [&](const auto&, double, auto, const Weight_function& wf) { fit_weight = &wf; });
+  const Weight_function& weight = *fit_weight;
+  const double h = weight.bandwidth();
   if(projection.options().one_sided && samples.has_normals()) {
     nbh.side = side_at<D>(samples, x);
     nbh.depth = other_side_depth * h;
@@ -106,7 +109,7 @@ void attribute_weights(const Projection& projection, const typename Projection::
   const auto agrees = [&](std::size_t i, const Vec<D>& n) {
     return !samples.has_normals() || std::abs(samples.local_normal(nbh.indices[i]).dot(axes * n)) >= 0.866 * n.norm();
   };
-  Fit_space_visitor<Projection>::visit(projection, fit, [&](const auto& space, double unit, auto is_graph) {
+  Fit_space_visitor<Projection>::visit(projection, fit, [&](const auto& space, double unit, auto is_graph, const Weight_function&) {
     using Space = std::decay_t<decltype(space)>;
     const typename Space::Parameters c = Eigen::Map<const typename Space::Parameters>(fit.coefficients.data());
     const auto to_frame = [&](const Vec<D>& p) { return Vec<D>(axes.transpose() * (p - origin) / unit); };
@@ -155,8 +158,9 @@ void attribute_weights(const Projection& projection, const typename Projection::
 /// the local fit `fit`, a result of `projection` (or of an operator sharing its sample set and
 /// function spaces, such as the seed projection of `MLS_implicit_function`).
 ///
-/// Each channel is the weighted mean of the input points' values, with the operator's weight
-/// function centred on `x` (on the side of `x` when `Projection_options::one_sided` and the
+/// Each channel is the weighted mean of the input points' values, with the weight function of the
+/// operator that made the fit (in `Mixed_projection`, the smooth or the sharp operator's) centred
+/// on `x` (on the side of `x` when `Projection_options::one_sided` and the
 /// samples have normals; non-finite values are skipped), over the input points that the fit
 /// explains: those within \f$3\sqrt{E} + h/100\f$ of it, \f$E\f$ = `fit.energy`, and, when the
 /// samples have normals, whose normal is within 30 degrees of the fit's at their closest point (an

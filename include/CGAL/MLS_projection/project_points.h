@@ -19,10 +19,12 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -74,18 +76,25 @@ bool project_warm(const Projection& projection, const std::vector<Point>& points
   hilbert_sort(order.begin(), order.end(), Traits(make_property_map(points)));
   order.insert(order.end(), invalid.begin(), invalid.end());
 
+  // One parallel loop over all blocks: a block near creases costs tens of times a smooth one, so
+  // a barrier every few blocks would leave threads idle. The callback runs on the calling thread
+  // after each block it projected; a cancellation skips the blocks not yet started.
   const std::size_t n = order.size();
-  const std::size_t batch = 32 * warm_start_block;
-  for(std::size_t begin = 0; begin < n; begin += batch) {
-    const std::size_t end = (std::min)(n, begin + batch);
-    const std::size_t blocks = (end - begin + warm_start_block - 1) / warm_start_block;
-    for_each_index<ConcurrencyTag>(0, blocks, 1, [&](std::size_t b) {
-      typename Projection::Warm_start warm;
-      const std::size_t first = begin + b * warm_start_block, last = (std::min)(end, first + warm_start_block);
-      for(std::size_t k = first; k < last; ++k) out[order[k]] = projection.project(points[order[k]], warm);
-    });
-    if(callback && !callback(double(end) / double(n)) && end < n) return false;
-  }
+  const std::size_t blocks = (n + warm_start_block - 1) / warm_start_block;
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<std::size_t> done{0};
+  std::atomic<bool> cancelled{false};
+  for_each_index<ConcurrencyTag>(0, blocks, 1, [&](std::size_t b) {
+    if(cancelled.load(std::memory_order_relaxed)) return;
+    typename Projection::Warm_start warm;
+    const std::size_t first = b * warm_start_block, last = (std::min)(n, first + warm_start_block);
+    for(std::size_t k = first; k < last; ++k) out[order[k]] = projection.project(points[order[k]], warm);
+    const std::size_t finished = done.fetch_add(last - first) + (last - first);
+    if(callback && std::this_thread::get_id() == caller && finished < n && !callback(double(finished) / double(n)))
+      cancelled.store(true, std::memory_order_relaxed);
+  });
+  if(cancelled.load()) return false;
+  if(callback) callback(1.);
   return true;
 }
 
@@ -104,8 +113,8 @@ bool project_warm(const Projection& projection, const std::vector<Point>& points
 /// can depend on the other queries (a continued fit can be another local minimum than the cold
 /// one, see the manual). Other operators project each query independently.
 ///
-/// The queries are processed in batches; after each batch, the `callback` is called from the
-/// calling thread with the fraction done.
+/// The `callback` is called from the calling thread with the fraction done: after each batch of
+/// queries, or with warm starts after each block that thread projected.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
 /// \param projection any projection operator of this package (e.g. `Levin_projection`)
@@ -114,8 +123,7 @@ bool project_warm(const Projection& projection, const std::vector<Point>& points
 /// \param np optional named parameters: `point_map` (the queries' point map, default identity)
 ///        and `callback` (a `std::function<bool(double)>`; returning `false` cancels)
 /// \return `true` when every query was projected, `false` when the callback cancelled (then
-///         only the results of the completed batches were written; with warm starts, whose
-///         batches follow the Hilbert curve, none)
+///         only the results of the completed batches were written; with warm starts, none)
 template <class ConcurrencyTag, class Projection, class QueryRange, class OutputIterator,
           class NamedParameters = parameters::Default_named_parameters>
 bool project_points(const Projection& projection, const QueryRange& queries, OutputIterator results,
