@@ -16,8 +16,10 @@
 #include <CGAL/MLS_projection/Weight_function.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -540,6 +542,91 @@ MLS_TEST(wedge_fan_3_random_against_brute_force) {
   random_fans<4>(8, 300, w4);
   random_fans<3>(9, 100, w3);
   random_fans<6>(10, 100, w6);
+}
+
+// The derivatives of the closest point by the parameters and by the query (the closest-point
+// operators' Jacobian of C(r)) against central differences, on a cone and on a ray; queries whose
+// piece changes within the difference step are skipped. At the apex they are one-sided, and on
+// the fan (the closest point of a query, queried again) they exist on the faces only.
+template <int D, class Space>
+void check_foot_derivatives(const Space& fs, unsigned seed, std::array<int, 5>& pieces, double& worst) {
+  constexpr int P = Space::number_of_parameters;
+  using V = Eigen::Matrix<double, D, 1>;
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> u(-2, 2), lat(-1.4, 1.4), lon(-7, 7);
+  for(int t = 0; t < 2000; ++t) {
+    typename Space::Parameters c;
+    for(int i = 0; i < P; ++i) c[i] = (D == 3 && i % 2 == 0) ? lat(g) : lon(g);
+    V x;
+    for(int i = 0; i < D; ++i) x[i] = u(g);
+    for(int on_fan = 0; on_fan < 2; ++on_fan) {
+      if(on_fan) x = fs.closest_point(c, x).point;
+      Eigen::Matrix<double, D, P> dc;
+      Eigen::Matrix<double, D, D> dx;
+      MLS::Closest_point<D> cp;
+      const bool exact = fs.closest_point_derivatives(c, x, cp, dc, dx);
+      MLS_CHECK((cp.point - fs.closest_point(c, x).point).norm() == 0.);
+      // on the fan, the derivatives exist on the faces: the cones in 3D, the rays in 2D
+      const bool on_face = !cp.is_singular && cp.point != V::Zero() && exact;
+      if(on_fan) {
+        if(!exact) ++pieces[4];
+        else ++pieces[3];
+        if(!exact) continue;
+      } else {
+        // off the fan, one-sided at the apex only (random fans have no coplanar cones)
+        MLS_CHECK(exact == (cp.point != V::Zero()));
+        if(!exact) {
+          ++pieces[2];
+          continue;
+        }
+      }
+      const double eps = 1e-6;
+      const auto central = [&](const auto& move) -> std::optional<V> {
+        const V plus = move(eps), minus = move(-eps);
+        const V forward = (plus - cp.point) / eps, backward = (cp.point - minus) / eps;
+        if((forward - backward).norm() > 1e-4 * (1 + forward.norm())) return std::nullopt; // another piece
+        return V((plus - minus) / (2 * eps));
+      };
+      bool same_piece = true;
+      double error = 0;
+      for(int j = 0; j < P + D; ++j) {
+        const auto d = central([&](double e) {
+          typename Space::Parameters ce = c;
+          V xe = x;
+          if(j < P) ce[j] += e;
+          else xe[j - P] += e;
+          return V(fs.closest_point(ce, xe).point);
+        });
+        if(!d) {
+          same_piece = false;
+          break;
+        }
+        error = std::max(error, ((j < P ? V(dc.col(j)) : V(dx.col(j - P))) - *d).norm());
+      }
+      if(on_fan) MLS_CHECK(on_face && (!same_piece || error <= 1e-6 * (1 + x.norm())));
+      if(!same_piece || on_fan) continue;
+      worst = std::max(worst, error);
+      MLS_CHECK_LE(error, 1e-6 * (1 + x.norm()));
+      ++pieces[(cp.is_singular || D == 2) ? 1 : 0];
+    }
+  }
+}
+
+MLS_TEST(wedge_fan_foot_derivatives) {
+  for(int D : {2, 3}) {
+    std::array<int, 5> pieces{}; // off the fan: cone, ray, one-sided; on it: derivatives, one-sided
+    double worst = 0;
+    if(D == 2) check_foot_derivatives<2>(Fan2(), 11, pieces, worst);
+    else check_foot_derivatives<3>(Fan3<4>(), 12, pieces, worst);
+    std::cout << "       " << D << "D, off the fan: " << pieces[0] << " on cones, " << pieces[1] << " on rays, "
+              << pieces[2] << " one-sided (apex), worst error " << worst << "; on the fan: " << pieces[3]
+              << " differentiable, " << pieces[4] << " one-sided\n";
+    if(D == 3) MLS_CHECK(pieces[0] > 200);
+    MLS_CHECK(pieces[1] > 200);
+    MLS_CHECK(pieces[2] > 50);
+    MLS_CHECK(pieces[3] > 1000);
+    MLS_CHECK(pieces[4] > (D == 2 ? 200 : 500));
+  }
 }
 
 // The two half-planes {s e_x + t w1}, {s e_x + t w2}, t >= 0, of an edge along e_x.

@@ -89,6 +89,17 @@ CGAL::MLS::Closest_point<D> closest_point(const Parameters& c, const Eigen::Matr
 void closest_points(const Parameters& c, const Eigen::Matrix<double, D, 1>* x, std::size_t n,
                     CGAL::MLS::Closest_point<D>* out, Parameters* gradients) const;
 
+/// Optional. The closest point `cp` of `x` on the member `c`, as `closest_point(c, x)`, and the
+/// derivatives of its position on the piece of the member that holds it: by the parameters in
+/// `d_parameters`, by `x` in `d_point`. Returns false where they are one-sided (the closest
+/// point moves onto another piece when `c` or `x` moves, e.g. at a fan's apex); the derivatives
+/// are then unset. With it, the closest-point operators differentiate \f$C_{H,f}(r)\f$ exactly
+/// where it returns true, and by central differences elsewhere and without it.
+bool closest_point_derivatives(const Parameters& c, const Eigen::Matrix<double, D, 1>& x,
+                               CGAL::MLS::Closest_point<D>& cp,
+                               Eigen::Matrix<double, D, number_of_parameters>& d_parameters,
+                               Eigen::Matrix<double, D, D>& d_point) const;
+
 /// Optional. A dimensionless residual added to the energy, zero for the members the space
 /// considers plausible at bandwidth `h` (the quadratic spaces bound the curvature).
 double regularization(const Parameters& c, double h) const;

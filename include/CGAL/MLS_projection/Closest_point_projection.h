@@ -86,6 +86,18 @@ struct has_closest_points<S, std::void_t<decltype(std::declval<const S&>().close
                                std::size_t(0), std::declval<Closest_point<S::ambient_dimension>*>(),
                                std::declval<typename S::Parameters*>()))>> : std::true_type {};
 
+// Function spaces may provide `closest_point_derivatives(c, x, cp, d_parameters, d_point)`, which
+// also gives the derivatives of the closest point's position by the parameters and by x: the
+// operators then differentiate C_{H,f}(r) exactly where it is differentiable (else by central
+// differences).
+template <class S, class = void> struct has_foot_derivatives : std::false_type {};
+template <class S>
+struct has_foot_derivatives<S, std::void_t<decltype(std::declval<const S&>().closest_point_derivatives(
+                                 std::declval<const typename S::Parameters&>(), std::declval<const Vec<S::ambient_dimension>&>(),
+                                 std::declval<Closest_point<S::ambient_dimension>&>(),
+                                 std::declval<Eigen::Matrix<double, S::ambient_dimension, S::number_of_parameters>&>(),
+                                 std::declval<Mat<S::ambient_dimension>&>()))>> : std::true_type {};
+
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionOperators
@@ -729,6 +741,7 @@ protected:
     constexpr int F = T + R; // parameters of the frame
     constexpr int n = F + P;
     constexpr bool translation_only = optimise_frame && R == 0; // the frame only moves
+    constexpr bool analytic_foot = internal::has_foot_derivatives<FunctionSpace>::value;
     using X = Eigen::Matrix<double, n, 1>;
     using Normal_matrix = Eigen::Matrix<double, n, n>;
     using Row = Eigen::Matrix<double, 1, n>;
@@ -773,7 +786,15 @@ protected:
         Frame<D> f;
         Parameters c;
         unpack(x, f, c);
-        const V C = f.to_local(space_.closest_point(c, f.to_frame(r)).point);
+        Eigen::Matrix<double, D, P> dS_dc; // the closest point's derivatives (frame coordinates)
+        internal::Mat<D> dS_dx;
+        // where the space's derivatives are one-sided, the difference quotients' rule below
+        const V xr = f.to_frame(r);
+        bool exact = false;
+        Closest_point<D> S;
+        if constexpr(analytic_foot) exact = space_.closest_point_derivatives(c, xr, S, dS_dc, dS_dx);
+        else S = space_.closest_point(c, xr);
+        const V C = f.to_local(S.point);
         C_at_last_evaluation = C;
         double W = 0;
         active.clear();
@@ -801,52 +822,63 @@ protected:
         value = sum / W + penalty * penalty + regularization * regularization;
         if(!std::isfinite(value)) return false;
 
-        // C(r) and the frame, by central differences (no input point involved: cheap).
+        // The derivatives of C(r) and of the frame (no input point involved: cheap).
         Eigen::Matrix<double, D, n> dC;
         std::array<internal::Mat<D>, F + 1> dA;
         std::array<V, F + 1> Adq; // A^T dq
         std::array<double, n> step;
         for(int j = 0; j < n; ++j) step[j] = 1e-7 * (1. + std::abs(x[j]));
-        // r's closest points on the member in the moved frames, in one batch (the member is the same)
-        std::array<Frame<D>, 2 * F + 1> moved;
-        std::array<V, 2 * F + 1> moved_r;
-        std::array<Closest_point<D>, 2 * F + 1> moved_cp;
-        for(int j = 0; j < F; ++j)
-          for(int side = 0; side < 2; ++side) {
-            X xs = x;
-            xs[j] += side == 0 ? step[j] : -step[j];
-            Parameters unused;
-            unpack(xs, moved[2 * j + side], unused);
-            moved_r[2 * j + side] = moved[2 * j + side].to_frame(r);
+        // C(r) jumps where the closest piece of a fan changes: when the one-sided differences
+        // disagree, the smaller one is kept (the derivative on the side of the query's piece)
+        const auto difference = [&](int j, const V& plus, const V& minus) {
+          const V forward = (plus - C) / step[j], backward = (C - minus) / step[j];
+          if((forward - backward).norm() <= 1e-2 * (forward.norm() + backward.norm()) + 1e-6)
+            dC.col(j) = 0.5 * (forward + backward);
+          else
+            dC.col(j) = forward.norm() < backward.norm() ? forward : backward;
+        };
+        if(exact && translation_only) {
+          // C = q + A S(A^T (r - q)) with the origin q moving along the axes A
+          for(int j = 0; j < F; ++j) {
+            Adq[j] = V::Unit(j);
+            dC.col(j) = f.axes * (V::Unit(j) - dS_dx.col(j));
           }
-        if constexpr(F > 0) closest_points(c, moved_r.data(), 2 * F, moved_cp.data(), nullptr);
-        for(int j = 0; j < n; ++j) {
-          const double eps = step[j];
-          V plus, minus;
-          if(j < F) {
-            plus = moved[2 * j].to_local(moved_cp[2 * j].point);
-            minus = moved[2 * j + 1].to_local(moved_cp[2 * j + 1].point);
-            dA[j] = (moved[2 * j].axes - moved[2 * j + 1].axes) / (2. * eps);
-            Adq[j] = f.axes.transpose() * ((moved[2 * j].origin - moved[2 * j + 1].origin) / (2. * eps));
-          } else {
+        } else if constexpr(F > 0) {
+          // r's closest points on the member in the moved frames, in one batch (the member is the same)
+          std::array<Frame<D>, 2 * F> moved;
+          std::array<V, 2 * F> moved_r;
+          std::array<Closest_point<D>, 2 * F> moved_cp;
+          for(int j = 0; j < F; ++j)
+            for(int side = 0; side < 2; ++side) {
+              X xs = x;
+              xs[j] += side == 0 ? step[j] : -step[j];
+              Parameters unused;
+              unpack(xs, moved[2 * j + side], unused);
+              moved_r[2 * j + side] = moved[2 * j + side].to_frame(r);
+            }
+          closest_points(c, moved_r.data(), 2 * F, moved_cp.data(), nullptr);
+          for(int j = 0; j < F; ++j) {
+            difference(j, moved[2 * j].to_local(moved_cp[2 * j].point), moved[2 * j + 1].to_local(moved_cp[2 * j + 1].point));
+            dA[j] = (moved[2 * j].axes - moved[2 * j + 1].axes) / (2. * step[j]);
+            Adq[j] = f.axes.transpose() * ((moved[2 * j].origin - moved[2 * j + 1].origin) / (2. * step[j]));
+          }
+        }
+        if(exact) {
+          dC.template rightCols<P>() = f.axes * dS_dc;
+        } else {
+          for(int j = F; j < n; ++j) {
+            const double eps = step[j];
             Parameters cp = c, cm = c;
             cp[j - F] += eps;
             cm[j - F] -= eps;
-            plus = f.to_local(space_.closest_point(cp, f.to_frame(r)).point);
-            minus = f.to_local(space_.closest_point(cm, f.to_frame(r)).point);
+            difference(j, f.to_local(space_.closest_point(cp, xr).point),
+                       f.to_local(space_.closest_point(cm, xr).point));
             if constexpr(!internal::has_closest_points<FunctionSpace>::value) {
               // the member's parameters: central differences of each weighted point's distance
               for(std::size_t k = 0; k < m; ++k)
                 grads[k][j - F] = (space_.closest_point(cp, y[k]).signed_distance - space_.closest_point(cm, y[k]).signed_distance) / (2. * eps);
             }
           }
-          // C(r) jumps where the closest piece of a fan changes: when the one-sided differences
-          // disagree, the smaller one is kept (the derivative on the side of the query's piece)
-          const V forward = (plus - C) / eps, backward = (C - minus) / eps;
-          if((forward - backward).norm() <= 1e-2 * (forward.norm() + backward.norm()) + 1e-6)
-            dC.col(j) = 0.5 * (forward + backward);
-          else
-            dC.col(j) = forward.norm() < backward.norm() ? forward : backward;
         }
         // the rows u_i (times sqrt(W)) of the weighted points in a matrix, for one product U^T U
         thread_local Eigen::Matrix<double, Eigen::Dynamic, n> U;

@@ -177,7 +177,7 @@ public:
 
   /// The mean, over input points, of the distance to their `k`-th nearest other input point.
   /// Computed on at most `max_points` points taken with a regular stride (deterministic).
-  double mean_kth_neighbor_distance(std::size_t k, std::size_t max_points = 20000) const {
+  double mean_kth_neighbor_distance(std::size_t k, std::size_t max_points = 5000) const {
     if(points_.size() < 2) return 0.;
     const std::size_t stride = (std::max<std::size_t>)(1, points_.size() / (std::max<std::size_t>)(1, max_points));
     double sum = 0;

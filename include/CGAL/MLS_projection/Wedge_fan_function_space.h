@@ -256,6 +256,52 @@ public:
     return project(prepare(c), x, nullptr);
   }
 
+  /// The closest point `cp` of `x` on the fan `c` and the derivatives of its position on the piece
+  /// that holds it (a cone, a ray or the apex): by the parameters in `d_parameters`, by `x` in
+  /// `d_point`. Returns false, the derivatives unset, where they are one-sided, the closest point
+  /// moving onto a face beside it when the fan or `x` moves: at the apex; in 3D, on a ray between
+  /// two coplanar cones, or on a crease ray with `x` on the fan (within \f$10^{-7}(1 + |x|)\f$).
+  bool closest_point_derivatives(const Parameters& c, const internal::Vec<D>& x, Closest_point<D>& cp,
+                                 Eigen::Matrix<double, D, number_of_parameters>& d_parameters,
+                                 internal::Mat<D>& d_point) const {
+    const Fan f = prepare(c);
+    std::array<double, number_of_vectors> coef;
+    coef.fill(0.);
+    if constexpr(D == 2) cp = project_2(f, x, coef);
+    else cp = project_3(f, x, coef);
+    internal::set_signed_distance(cp, x);
+    d_parameters.setZero();
+    d_point.setZero();
+    // a cone holds the foot when two consecutive coefficients are not zero, a ray when one is
+    int ray = -1;
+    for(int j = 0; j < number_of_vectors; ++j) {
+      if(coef[j] == 0.) continue;
+      if constexpr(D == 3) {
+        const int k = (j + 1) % number_of_vectors;
+        if(coef[k] != 0.) {
+          cone_derivatives(f, x, j, k, d_parameters, d_point);
+          return true;
+        }
+      }
+      ray = j;
+    }
+    // Elsewhere the closest point moves onto a face beside its piece when the fan or x moves: at
+    // the apex (a corner's, a crease's or a plane's), and in 3D on a ray between coplanar cones
+    // or on a crease ray that x lies on.
+    if(ray < 0) return false;
+    if constexpr(D == 3)
+      if(!cp.is_singular || std::abs(cp.signed_distance) <= 1e-7 * (1. + x.norm())) return false;
+    // on a ray, the foot is (x . v) v
+    const V& v = f.v[ray];
+    const double t = x.dot(v);
+    for(int a = 0; a < (D == 2 ? 1 : 2); ++a) {
+      const V& dv = f.dv[ray][a];
+      d_parameters.col(D == 2 ? f.order[ray] : 2 * f.order[ray] + a) = x.dot(dv) * v + t * dv;
+    }
+    d_point = v * v.transpose();
+    return true;
+  }
+
   /// The closest points of the `n` points `x` on the fan `c` (the fan is prepared once) and,
   /// when `gradients` is not null, the derivatives of their signed distances with respect to
   /// the parameters: by the envelope theorem, \f$-g \cdot \partial S/\partial c\f$ at the closest
@@ -357,6 +403,25 @@ private:
       }
     }
     return cp;
+  }
+
+  // The derivatives of the foot x - (x . n) n on the plane of the cone (v[j], v[k]), n = u / |u|,
+  // u = v[j] x v[k].
+  static void cone_derivatives(const Fan& f, const V& x, int j, int k,
+                               Eigen::Matrix<double, D, number_of_parameters>& d_parameters, internal::Mat<D>& d_point) {
+    if constexpr(D == 3) {
+      const V u = f.v[j].cross(f.v[k]);
+      const double len = u.norm();
+      const V n = u / len;
+      const double xn = x.dot(n);
+      for(int a = 0; a < 2; ++a)
+        for(int side = 0; side < 2; ++side) {
+          const V du = side == 0 ? V(f.dv[j][a].cross(f.v[k])) : V(f.v[j].cross(f.dv[k][a]));
+          const V dn = (du - n * n.dot(du)) / len;
+          d_parameters.col(2 * f.order[side == 0 ? j : k] + a) = -x.dot(dn) * n - xn * dn;
+        }
+      d_point = internal::Mat<D>::Identity() - n * n.transpose();
+    }
   }
 
   static Closest_point<2> project_2(const Fan& f, const V& x, std::array<double, 2>& coef) {
