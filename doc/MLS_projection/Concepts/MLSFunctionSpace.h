@@ -93,7 +93,7 @@ void closest_points(const Parameters& c, const Eigen::Matrix<double, D, 1>* x, s
 /// derivatives of its position on the piece of the member that holds it: by the parameters in
 /// `d_parameters`, by `x` in `d_point`. Returns false where they are one-sided (the closest
 /// point moves onto another piece when `c` or `x` moves, e.g. at a fan's apex); the derivatives
-/// are then unset. With it, the closest-point operators differentiate \f$C_{H,f}(r)\f$ exactly
+/// are then unspecified. With it, the closest-point operators differentiate \f$C_{H,f}(r)\f$ exactly
 /// where it returns true, and by central differences elsewhere and without it.
 bool closest_point_derivatives(const Parameters& c, const Eigen::Matrix<double, D, 1>& x,
                                CGAL::MLS::Closest_point<D>& cp,

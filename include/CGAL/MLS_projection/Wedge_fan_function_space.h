@@ -256,11 +256,11 @@ public:
     return project(prepare(c), x, nullptr);
   }
 
-  /// The closest point `cp` of `x` on the fan `c` and the derivatives of its position on the piece
-  /// that holds it (a cone, a ray or the apex): by the parameters in `d_parameters`, by `x` in
-  /// `d_point`. Returns false, the derivatives unset, where they are one-sided, the closest point
-  /// moving onto a face beside it when the fan or `x` moves: at the apex; in 3D, on a ray between
-  /// two coplanar cones, or on a crease ray with `x` on the fan (within \f$10^{-7}(1 + |x|)\f$).
+  /// The closest point `cp` of `x` on the fan `c` and the derivatives of its position on the cone
+  /// or ray that holds it: by the parameters in `d_parameters`, by `x` in `d_point`. Returns false
+  /// (the derivatives zero) where they are one-sided, the closest point moving onto a face beside
+  /// its piece when the fan or `x` moves: at the apex; in 3D, on a ray between two coplanar cones,
+  /// or on a crease ray with `x` on the fan (within \f$10^{-7}(1 + |x|)\f$).
   bool closest_point_derivatives(const Parameters& c, const internal::Vec<D>& x, Closest_point<D>& cp,
                                  Eigen::Matrix<double, D, number_of_parameters>& d_parameters,
                                  internal::Mat<D>& d_point) const {
