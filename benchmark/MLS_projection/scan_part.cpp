@@ -28,6 +28,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -60,6 +61,7 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using Exact_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 
 // Uniform and normal variates from mt19937_64's specified output (the standard distributions
 // are implementation-defined).
@@ -182,7 +184,12 @@ int mesh_quality(const std::string& part_file, const std::string& mesh_file) {
   const bool closed = CGAL::is_closed(mesh);
   auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:c", 0).first;
   const std::size_t components = PMP::connected_components(mesh, component);
-  const bool self_intersecting = PMP::does_self_intersect(mesh);
+  // with exact predicates: nearly coplanar facets fool the inexact kernel's tests
+  std::vector<Exact_point> exact_points;
+  for(const Point& p : soup_points) exact_points.emplace_back(p.x(), p.y(), p.z());
+  CGAL::Surface_mesh<Exact_point> exact_mesh;
+  PMP::polygon_soup_to_polygon_mesh(exact_points, soup, exact_mesh);
+  const bool self_intersecting = PMP::does_self_intersect(exact_mesh);
 
   Tree part_tree(faces(part).first, faces(part).second, part), mesh_tree(faces(mesh).first, faces(mesh).second, mesh);
   part_tree.accelerate_distance_queries();
