@@ -192,8 +192,10 @@ def print_meshing(rows, points):
         note = r["message"] if r["message"].startswith("no mesh") else ""
         features = re.search(r"(\d+) feature polylines, (\d+) corners( \(not protected)?", r["message"])
         if r["method"] == "MLS" and features and not note:
-            note = "%s polylines, %s corners%s" % (features.group(1), features.group(2),
-                                                  ", not protected" if features.group(3) else "")
+            dropped = re.search(r"(\d+) polylines off the surface dropped", r["message"])
+            note = "%s polylines, %s corners%s%s" % (features.group(1), features.group(2),
+                                                    ", not protected" if features.group(3) else "",
+                                                    " (%s off the surface dropped)" % dropped.group(1) if dropped else "")
         print("| %s | %g | %s | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["part"], r["noise"], r["seed"], r["method"], r["seconds"], r["memory"] / 1024., get("closed"),
             get("manifold"), get("components"), get("self_intersecting"), get("hausdorff"), get("rms"),

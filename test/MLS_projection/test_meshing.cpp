@@ -10,11 +10,13 @@
 #include <CGAL/MLS_projection.h>
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
 #include <CGAL/MLS_projection/interpolate_attributes.h>
+#include <CGAL/MLS_projection/internal/unsupported_components.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
@@ -736,6 +738,44 @@ MLS_TEST(builtin_solid_default_mesh) {
   check_closed_mesh(c, 0, 0.25 * h);
   MLS_CHECK(report.feature_polylines >= 11);
   MLS_CHECK_MSG(!report.features_dropped, "the polylines were not protected"); // nor over the budget
+}
+
+// The components of a mesh away from the data are removed, the nearest one kept: two unit
+// icosahedra 4 apart, the data on the first one's vertices. Bound 0.5: the second's vertices are
+// at least 2 from the data, the first's on it.
+MLS_TEST(unsupported_components_removed) {
+  const Point a(0, 0, 0), b(4, 0, 0);
+  const auto two = [&] {
+    Mesh m;
+    CGAL::make_icosahedron(m, a, 1.);
+    CGAL::make_icosahedron(m, b, 1.);
+    return m;
+  };
+  const auto distance_to = [](std::vector<Point> data) {
+    return [data](const Point& q) {
+      double d = std::numeric_limits<double>::infinity();
+      for(const Point& p : data) d = (std::min)(d, std::sqrt(CGAL::squared_distance(p, q)));
+      return d;
+    };
+  };
+  std::vector<Point> on_a, on_both;
+  Mesh m = two();
+  for(auto v : m.vertices()) {
+    on_both.push_back(m.point(v));
+    if(CGAL::squared_distance(m.point(v), a) < 2) on_a.push_back(m.point(v));
+  }
+  MLS_CHECK(on_a.size() == 12 && on_both.size() == 24);
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(m, distance_to(on_a), 0.5) == 1);
+  MLS_CHECK(m.number_of_vertices() == 12 && m.number_of_faces() == 20);
+  for(auto v : m.vertices()) MLS_CHECK(CGAL::squared_distance(m.point(v), a) < 1.01);
+  Mesh both = two();
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(both, distance_to(on_both), 0.5) == 0);
+  MLS_CHECK(both.number_of_faces() == 40);
+  // data far from both: the nearer one (b) stays
+  Mesh far = two();
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(far, distance_to({Point(10, 0, 0)}), 0.5) == 1);
+  MLS_CHECK(far.number_of_faces() == 20);
+  for(auto v : far.vertices()) MLS_CHECK(CGAL::squared_distance(far.point(v), b) < 1.01);
 }
 
 // Mesh_3 with polylines over its evaluation budget meshes again without them: on the unit sphere

@@ -92,6 +92,10 @@ struct Meshing_report {
   /// @{
   std::size_t feature_polylines = 0, corners = 0;
   /// @}
+  /// Feature polylines dropped before meshing because the implicit surface does not pass through
+  /// them: the median of \f$|f|\f$ over their vertices exceeds the facet distance (Mesh_3 could not
+  /// protect them). Not counted in `feature_polylines`.
+  std::size_t off_surface_polylines = 0;
   /// Points projected by the feature detection (helper points and polyline vertices).
   std::size_t feature_queries = 0;
   /// Mesh_3 failed with the feature polylines (a CGAL error, e.g. on polylines too close to each
@@ -102,6 +106,9 @@ struct Meshing_report {
   /// @{
   bool features_dropped = false, feature_budget_exceeded = false;
   /// @}
+  /// Connected components of the mesher's output removed as unsupported by the data (see
+  /// `mls_surface_reconstruction()`).
+  std::size_t removed_components = 0;
   /// The criteria used.
   /// @{
   double facet_size = 0, facet_distance = 0;

@@ -21,6 +21,7 @@
 #include <CGAL/MLS_projection/internal/mesh_attributes.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
+#include <CGAL/MLS_projection/internal/unsupported_components.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -67,6 +68,29 @@ std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(c
   return {};
 }
 
+/// Removes from `polylines` those the surface \f$f = 0\f$ does not pass through: the median of
+/// \f$|f|\f$ over their vertices exceeds `facet_distance`. Mesh_3 cannot protect them: the facets
+/// at their protected vertices, which its refinement cannot move, stay further from the surface
+/// than the facet distance, and the refinement fails or goes on without end. This happens where
+/// the blended fits round a crease the operator finds sharp (noisy scans, whose seeds near the
+/// creases keep P_L's fit). Returns the number removed.
+template <class Point_3, class Function>
+std::size_t drop_polylines_off_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f,
+                                       double facet_distance) {
+  const std::size_t before = polylines.size();
+  std::vector<double> off;
+  polylines.erase(std::remove_if(polylines.begin(), polylines.end(),
+                                 [&](const std::vector<Point_3>& line) {
+                                   if(line.empty()) return true;
+                                   off.clear();
+                                   for(const Point_3& p : line) off.push_back(std::abs(CGAL::to_double(f(p))));
+                                   std::nth_element(off.begin(), off.begin() + off.size() / 2, off.end());
+                                   return !(off[off.size() / 2] <= facet_distance);
+                                 }),
+                  polylines.end());
+  return before - polylines.size();
+}
+
 /// Whether `f` is positive at 256 points spread evenly over the sphere (Fibonacci lattice):
 /// the surface \f$f = 0\f$ is then closed inside it. It is not when the data bound no volume
 /// (coplanar points, an open scan): the region \f$f < 0\f$ then reaches the sphere, and Mesh_3
@@ -91,9 +115,14 @@ bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radi
 /// input normals, or estimated and oriented, see `MLS_implicit_function`), the projection
 /// operator and function space of `options`, the implicit function of its local fits
 /// (`MLS_implicit_function`, mode and seeds from `options.implicit_function`), the sharp-feature
-/// polylines when `options.features` is set and a detection is available, then CGAL's Mesh_3
+/// polylines when `options.features` is set and a detection is available (those the surface
+/// \f$f = 0\f$ does not pass through, within the facet distance, are dropped: see
+/// `Meshing_report::off_surface_polylines`), then CGAL's Mesh_3
 /// (manifold output) or Surface_mesher, with the criteria of `options` (facet size 2 and facet
-/// distance 0.25 times the average spacing by default, facet angle 25 degrees).
+/// distance 0.25 times the average spacing by default, facet angle 25 degrees). A connected
+/// component of the mesh whose median vertex distance to the nearest input point exceeds \f$h/2\f$
+/// is removed (a bubble of the function's sign away from the data, not a sampled surface; see
+/// `Meshing_report::removed_components`); the component nearest to the data is always kept.
 ///
 /// The average spacing is CGAL's `compute_average_spacing` with 6 neighbours.
 ///
@@ -243,6 +272,8 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     std::vector<std::vector<Point_3>> polylines;
     if(options.features && options.mesher == Meshing_options::Mesher::MESH_3)
       polylines = internal::feature_polylines<ConcurrencyTag>(function, corners, out.feature_queries);
+    const double facet_distance = options.facet_distance > 0 ? options.facet_distance : 0.25 * spacing;
+    out.off_surface_polylines = internal::drop_polylines_off_surface(polylines, function, facet_distance);
     out.feature_polylines = polylines.size();
     out.corners = corners;
     out.seconds_features = since(t_features);
@@ -278,7 +309,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     }
     in.polylines = std::move(polylines);
     in.facet_size = options.facet_size > 0 ? options.facet_size : 2. * spacing;
-    in.facet_distance = options.facet_distance > 0 ? options.facet_distance : 0.25 * spacing;
+    in.facet_distance = facet_distance;
     in.facet_angle = options.facet_angle;
     // the pace of the meshing progress: measured, 126000 evaluations (537 vertices) for 2000
     // samples of a sphere with the default size 2s: 250 n (s / size)^2
@@ -309,6 +340,13 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.features_dropped = r.features_dropped;
     out.feature_budget_exceeded = r.feature_budget_exceeded;
     if(!r.success) return fail(r.cancelled ? "cancelled" : r.message);
+    out.removed_components = internal::remove_unsupported_components(
+      mesh,
+      [&](const auto& q) {
+        const Point_3 p(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+        return samples->kth_neighbor_distance(samples->to_local(p), 1);
+      },
+      0.5 * h);
     if constexpr(has_attributes)
       internal::interpolate_vertex_attributes<ConcurrencyTag>(function.seed_projection(), function.projected_seeds(), mesh,
                                                             get_parameter(np, internal_np::mls_vertex_attribute_map));
