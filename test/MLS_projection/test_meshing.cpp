@@ -778,6 +778,27 @@ MLS_TEST(unsupported_components_removed) {
   for(auto v : far.vertices()) MLS_CHECK(CGAL::squared_distance(far.point(v), b) < 1.01);
 }
 
+// The polylines the surface f = 0 does not pass through are dropped: for the unit sphere's
+// signed distance and a facet distance of 0.05, its equator is kept, a circle 0.1 outside it and a
+// polyline half of whose vertices are 0.2 inside are dropped (median |f| 0.1, 0.2), one with a
+// third of them 0.2 inside is kept (median |f| 0).
+MLS_TEST(off_surface_polylines_dropped) {
+  const auto circle = [](double r, double z, int n) {
+    std::vector<Point> c;
+    for(int i = 0; i <= n; ++i) c.emplace_back(r * std::cos(2 * CGAL_PI * i / n), r * std::sin(2 * CGAL_PI * i / n), z);
+    return c;
+  };
+  const auto inside_every = [&](int k) { // every k-th vertex of the equator 0.2 inside
+    std::vector<Point> c = circle(1, 0, 24);
+    for(std::size_t i = 0; i < c.size(); i += k) c[i] = CGAL::ORIGIN + 0.8 * (c[i] - CGAL::ORIGIN);
+    return c;
+  };
+  std::vector<std::vector<Point>> lines{circle(1, 0, 24), circle(1.1, 0, 24), inside_every(2), inside_every(3)};
+  const auto f = [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 1; };
+  MLS_CHECK(CGAL::MLS::internal::drop_polylines_off_surface(lines, f, 0.05) == 2);
+  MLS_CHECK(lines.size() == 2 && lines[0].size() == 25 && lines[1][3] != lines[0][3]);
+}
+
 // Mesh_3 with polylines over its evaluation budget meshes again without them: on the unit sphere
 // with 5 circles on it as polylines (a normal run of a few 10^4 evaluations) and a budget of 1000 evaluations, the mesh is made without the polyline, closed
 // and accurate, and the report says so; with the default budget, the polyline is protected.
