@@ -69,11 +69,10 @@ std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(c
 }
 
 /// Removes from `polylines` those the surface \f$f = 0\f$ does not pass through: the median of
-/// \f$|f|\f$ over their vertices exceeds `facet_distance`. Mesh_3 cannot protect them: the facets
-/// at their protected vertices, which its refinement cannot move, stay further from the surface
-/// than the facet distance, and the refinement fails or goes on without end. This happens where
-/// the blended fits round a crease the operator finds sharp (noisy scans, whose seeds near the
-/// creases keep P_L's fit). Returns the number removed.
+/// \f$|f|\f$ over their vertices exceeds `facet_distance`. With them, Mesh_3's manifold refinement,
+/// which cannot move the protected vertices, failed or went on without end. They occur where the
+/// blended fits round a crease the operator finds sharp (noisy scans, whose seeds near the creases
+/// keep P_L's fit). Returns the number removed.
 template <class Point_3, class Function>
 std::size_t drop_polylines_off_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f,
                                        double facet_distance) {
