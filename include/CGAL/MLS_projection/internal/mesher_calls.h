@@ -128,13 +128,15 @@ struct Evaluation_monitor {
 // The values of the function at points this thread evaluated in a run, in a direct-mapped table
 // indexed by a hash of the coordinates: Mesh_3 evaluates the circumcentre of each new cell to label
 // it, then again as an end of each of its facets' dual segments, and the ends of a segment to test
-// it for an intersection, then again to construct it.
+// it for an intersection, then again to construct it, often many thousands of evaluations later:
+// 2^18 entries (10 MB) make a quarter fewer evaluations than 2^12 on a 50k-point scan, and more
+// entries save little.
 struct Recent_values {
   struct Entry {
     std::uint64_t run = 0;
     double x = 0, y = 0, z = 0, value = 0;
   };
-  static constexpr int bits = 12;
+  static constexpr int bits = 18;
   std::vector<Entry> entries = std::vector<Entry>(std::size_t(1) << bits);
 
   static std::size_t slot(double x, double y, double z) {
