@@ -20,6 +20,7 @@ part's mesh as fractions of its bounding-box diagonal (RMS and maximum).
 """
 
 import argparse
+import filecmp
 import math
 import os
 import re
@@ -157,7 +158,8 @@ def scaled_scan(tools, mesh, work, part, noise, args, log):
 
 def measure_meshing(tools, mesh, scan, args, log):
     """mls_mesh with its defaults and poisson_mesh on `scan`, both on all cores; their time, peak
-    memory and `scan_part mesh` figures against the part `mesh`."""
+    memory and `scan_part mesh` figures against the part `mesh`. mls_mesh again with one thread:
+    its speed-up on all cores and whether the two meshes are the same, byte for byte."""
     d = os.path.dirname(scan)
     rows = []
     cases = {
@@ -177,6 +179,14 @@ def measure_meshing(tools, mesh, scan, args, log):
         fields = output_of([tools["scan_part"], "mesh", mesh, out]).split() if os.path.exists(out) else ["none"]
         row.update(dict(zip(fields[0::2], fields[1::2])))
         log("    %-8s %.1f s %s" % (name, seconds, " ".join(fields)))
+        if name == "MLS" and status == 0:
+            single = os.path.join(d, "mls_1_thread.off")
+            cmd1 = cmd[:4] + [single] + cmd[5:] + ["--threads", "1"]
+            seconds1, _, status1, _ = run_until(cmd1, args.timeout)
+            if status1 == 0:
+                row["speedup"] = seconds1 / seconds
+                row["same_mesh"] = filecmp.cmp(out, single, shallow=False)
+                log("    1 thread %.1f s, %s mesh" % (seconds1, "the same" if row["same_mesh"] else "another"))
         rows.append(row)
     return rows
 
@@ -185,8 +195,8 @@ def print_meshing(rows, points):
     print("## Meshing scans of CAD parts (%d points, mls_mesh defaults against CGAL's Poisson, both on all "
           "cores, one run)\n" % points)
     print("| part | noise | seed | method | s | peak MB | closed | manifold | components | self-intersecting | "
-          "Hausdorff | RMS | normal error (deg) | sharp-edge distance | note |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "Hausdorff | RMS | normal error (deg) | sharp-edge distance | 1 thread / all | note |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         get = lambda k: r.get(k, "-")
         note = r["message"] if r["message"].startswith("no mesh") else ""
@@ -196,16 +206,24 @@ def print_meshing(rows, points):
             note = "%s polylines, %s corners%s%s" % (features.group(1), features.group(2),
                                                     ", not protected" if features.group(3) else "",
                                                     " (%s off the surface dropped)" % dropped.group(1) if dropped else "")
-        print("| %s | %g | %s | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        threads = "-"
+        if "speedup" in r:
+            threads = "%.2f%s" % (r["speedup"], "" if r["same_mesh"] else ", another mesh")
+        print("| %s | %g | %s | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["part"], r["noise"], r["seed"], r["method"], r["seconds"], r["memory"] / 1024., get("closed"),
             get("manifold"), get("components"), get("self_intersecting"), get("hausdorff"), get("rms"),
-            get("normal_deg"), get("edge_distance"), note))
+            get("normal_deg"), get("edge_distance"), threads, note))
     mls = [r for r in rows if r["method"] == "MLS"]
     good = sum(1 for r in mls if r.get("closed") == "1" and r.get("manifold") == "1")
     pairs = list(zip(rows[0::2], rows[1::2]))
     print("\nMLS: %d closed manifold meshes of %d scans; MLS / Poisson, medians: time %.2f, peak memory %.2f" % (
         good, len(mls), statistics.median(m["seconds"] / p["seconds"] for m, p in pairs),
         statistics.median(m["memory"] / p["memory"] for m, p in pairs)))
+    timed = [r for r in mls if "speedup" in r]
+    if timed:
+        print("MLS, one thread against all cores: median speed-up %.2f (lowest %.2f); the same mesh on %d of %d scans"
+              % (statistics.median(r["speedup"] for r in timed), min(r["speedup"] for r in timed),
+                 sum(1 for r in timed if r["same_mesh"]), len(timed)))
 
 
 def main():
