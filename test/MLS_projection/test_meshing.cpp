@@ -799,6 +799,65 @@ MLS_TEST(off_surface_polylines_dropped) {
   MLS_CHECK(lines.size() == 2 && lines[0].size() == 25 && lines[1][3] != lines[0][3]);
 }
 
+// The polylines' vertices are fitted to the surface f = 0: on the unit sphere's signed distance
+// with a facet distance of 0.05, an equator 0.01 outside is moved onto the sphere (to 1e-4 of the
+// facet distance, and its two ends alike), a polyline with one vertex 0.2 inside is split there
+// into its two pieces, and one with every other vertex 0.2 inside leaves only pieces of one vertex:
+// nothing.
+MLS_TEST(polylines_fitted_to_surface) {
+  const auto arc = [](double r, int n) {
+    std::vector<Point> c;
+    for(int i = 0; i <= n; ++i) c.emplace_back(r * std::cos(CGAL_PI * i / 12), r * std::sin(CGAL_PI * i / 12), 0.);
+    if(n == 24) c.back() = c.front(); // closed
+    return c;
+  };
+  std::vector<Point> split = arc(1, 12), sparse = arc(1, 12);
+  split[5] = CGAL::ORIGIN + 0.8 * (split[5] - CGAL::ORIGIN);
+  for(std::size_t i = 0; i < sparse.size(); i += 2) sparse[i] = CGAL::ORIGIN + 0.8 * (sparse[i] - CGAL::ORIGIN);
+  std::vector<std::vector<Point>> lines{arc(1.01, 24), split, sparse};
+  const auto f = [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 1; };
+  CGAL::MLS::internal::fit_polylines_to_surface(lines, f, 0.05, 5e-6);
+  MLS_CHECK(lines.size() == 3);
+  if(lines.size() != 3) return;
+  MLS_CHECK(lines[0].size() == 25 && lines[1].size() == 5 && lines[2].size() == 7);
+  MLS_CHECK(lines[0].front() == lines[0].back());
+  for(const auto& line : lines)
+    for(const Point& p : line) MLS_CHECK_LE(std::abs(f(p)), 5e-6);
+}
+
+// Mesh_3 with polylines starts from their protecting balls: two unit spheres 3 apart, 5 circles of
+// latitude protected on the first, a probe segment across each sphere: the second sphere, away
+// from the polylines, is meshed too (from the probe's initial point), two closed components.
+MLS_TEST(component_away_from_the_polylines_meshed) {
+  using Input = CGAL::MLS::internal::Mesher_input<K>;
+  const Point b(3, 0, 0);
+  const auto spheres = [&](const Point& p) {
+    return std::sqrt((std::min)((p - CGAL::ORIGIN).squared_length(), (p - b).squared_length())) - 1.;
+  };
+  Input in;
+  in.function = spheres;
+  in.bounding_sphere = K::Sphere_3(Point(1.5, 0, 0), 16.);
+  in.inner_point = CGAL::ORIGIN;
+  in.probes = {{Point(0, 0, 0.5), Point(0, 0, 1.5)}, {Point(3, 0, 0.5), Point(3, 0, 1.5)}};
+  for(const double z : {-0.8, -0.4, 0., 0.4, 0.8}) {
+    std::vector<Point> circle;
+    const double r = std::sqrt(1 - z * z);
+    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * M_PI / 24), r * std::sin(i * M_PI / 24), z);
+    circle.push_back(circle.front());
+    in.polylines.push_back(circle);
+  }
+  in.facet_size = 0.15;
+  in.facet_distance = 0.01;
+  Mesh m;
+  const auto r = CGAL::MLS::internal::mesh_with_mesh_3<CGAL::Sequential_tag>(in, m);
+  MLS_CHECK(r.success && !r.features_dropped);
+  std::size_t near_b = 0;
+  for(auto v : m.vertices()) near_b += CGAL::squared_distance(m.point(v), b) < 1.1 ? 1 : 0;
+  std::cout << "  " << m.number_of_vertices() << " vertices, " << near_b << " on the second sphere" << std::endl;
+  MLS_CHECK(near_b > 100);
+  check_closed_mesh(check_mesh(m, spheres), 4, 2.5e-3); // two spheres: Euler characteristic 2 + 2
+}
+
 // Mesh_3 with polylines over its evaluation budget meshes again without them: on the unit sphere
 // with 5 circles on it as polylines (a normal run of a few 10^4 evaluations) and a budget of 1000 evaluations, the mesh is made without the polyline, closed
 // and accurate, and the report says so; with the default budget, the polyline is protected.

@@ -164,6 +164,10 @@ struct Meshing_options {
   double facet_size = 0;
   /// The facet distance criterion; 0: 0.25 times the average spacing.
   double facet_distance = 0;
+  /// Mesh_3's edge size criterion along the feature polylines; 0: 0.75 times the facet size (with
+  /// larger protecting balls, Mesh_3's manifold refinement next to close polylines can loop without
+  /// end: see the manual, "Criteria and Meshers").
+  double edge_size = 0;
   /// The facet angle criterion, in degrees (at most 30 for the meshers to terminate).
   double facet_angle = 25;
   /// The bandwidth \f$h\f$ of the projection; 0: derived from the data (`Projection_options`).

@@ -23,6 +23,7 @@
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/internal/unsupported_components.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/compute_average_spacing.h>
@@ -90,6 +91,54 @@ std::size_t drop_polylines_off_surface(std::vector<std::vector<Point_3>>& polyli
   return before - polylines.size();
 }
 
+/// Fits the vertices of `polylines` to the surface \f$f = 0\f$: those further than `facet_distance`
+/// from it (in \f$|f|\f$) are removed, splitting their polylines (pieces of fewer than 2 vertices
+/// are dropped), and the others are moved onto it by Newton steps along the gradient of \f$f\f$
+/// (central differences), until \f$|f| \le\f$ `tolerance` (at most 8 steps, the best point kept).
+/// Mesh_3 centres its protecting balls on the polylines and never moves them: next to a centre off
+/// the surface, its manifold refinement could not make the surface a disk and looped without end.
+/// A vertex moves the same wherever it occurs (corners, the ends of a closed polyline).
+template <class Point_3, class Function>
+void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f, double facet_distance,
+                              double tolerance) {
+  using Vector_3 = typename Kernel_traits<Point_3>::Kernel::Vector_3;
+  const auto value = [&f](const Point_3& p) { return CGAL::to_double(f(p)); };
+  const auto snapped = [&](Point_3 p, double v) {
+    const double e = 1e-3 * facet_distance;
+    Point_3 best = p;
+    double best_v = std::abs(v);
+    for(int it = 0; it < 8 && best_v > tolerance; ++it) {
+      const Vector_3 g((value(p + Vector_3(e, 0, 0)) - value(p - Vector_3(e, 0, 0))) / (2 * e),
+                       (value(p + Vector_3(0, e, 0)) - value(p - Vector_3(0, e, 0))) / (2 * e),
+                       (value(p + Vector_3(0, 0, e)) - value(p - Vector_3(0, 0, e))) / (2 * e));
+      const double g2 = CGAL::to_double(g.squared_length());
+      if(!(g2 > 1e-12)) break;
+      p = p - g * (v / g2);
+      v = value(p);
+      if(std::abs(v) < best_v) {
+        best = p;
+        best_v = std::abs(v);
+      }
+    }
+    return best;
+  };
+  std::vector<std::vector<Point_3>> fitted;
+  for(const std::vector<Point_3>& line : polylines) {
+    std::vector<Point_3> piece;
+    for(const Point_3& p : line) {
+      const double v = value(p);
+      if(std::abs(v) <= facet_distance) {
+        piece.push_back(snapped(p, v));
+        continue;
+      }
+      if(piece.size() >= 2) fitted.push_back(std::move(piece));
+      piece.clear();
+    }
+    if(piece.size() >= 2) fitted.push_back(std::move(piece));
+  }
+  polylines = std::move(fitted);
+}
+
 /// Whether `f` is positive at 256 points spread evenly over the sphere (Fibonacci lattice):
 /// the surface \f$f = 0\f$ is then closed inside it. It is not when the data bound no volume
 /// (coplanar points, an open scan): the region \f$f < 0\f$ then reaches the sphere, and Mesh_3
@@ -116,7 +165,7 @@ bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radi
 /// (`MLS_implicit_function`, mode and seeds from `options.implicit_function`), the sharp-feature
 /// polylines when `options.features` is set and a detection is available (those the surface
 /// \f$f = 0\f$ does not pass through, within the facet distance, are dropped: see
-/// `Meshing_report::off_surface_polylines`), then CGAL's Mesh_3
+/// `Meshing_report::off_surface_polylines`; the others are fitted to it), then CGAL's Mesh_3
 /// (manifold output) or Surface_mesher, with the criteria of `options` (facet size 2 and facet
 /// distance 0.25 times the average spacing by default, facet angle 25 degrees). A connected
 /// component of the mesh whose median vertex distance to the nearest input point exceeds \f$h/2\f$
@@ -273,6 +322,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
       polylines = internal::feature_polylines<ConcurrencyTag>(function, corners, out.feature_queries);
     const double facet_distance = options.facet_distance > 0 ? options.facet_distance : 0.25 * spacing;
     out.off_surface_polylines = internal::drop_polylines_off_surface(polylines, function, facet_distance);
+    internal::fit_polylines_to_surface(polylines, function, facet_distance, 1e-4 * facet_distance);
     out.feature_polylines = polylines.size();
     out.corners = corners;
     out.seconds_features = since(t_features);
@@ -309,6 +359,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     in.polylines = std::move(polylines);
     in.facet_size = options.facet_size > 0 ? options.facet_size : 2. * spacing;
     in.facet_distance = facet_distance;
+    in.edge_size = options.edge_size > 0 ? options.edge_size : 0.75 * in.facet_size;
     in.facet_angle = options.facet_angle;
     // the pace of the meshing progress: measured, 126000 evaluations (537 vertices) for 2000
     // samples of a sphere with the default size 2s: 250 n (s / size)^2

@@ -17,6 +17,7 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 #include <CGAL/make_mesh_3.h>
+#include <CGAL/refine_mesh_3.h>
 
 #include <CGAL/IO/facets_in_complex_2_to_triangle_mesh.h>
 #include <CGAL/Implicit_surface_3.h>
@@ -400,6 +401,37 @@ bool has_finite_vertices(const PolygonMesh& mesh) {
   return true;
 }
 
+/// Inserts into `c3t3` the domain's initial points (the probes' intersections with the surface)
+/// that lie further than `distance` from every surface vertex of the complex, as surface vertices;
+/// returns how many. With polylines, Mesh_3 starts from their protecting balls and adds the initial
+/// points only when those give no surface facet: the components of the surface away from the
+/// polylines were missed, or all of it (on a noisy scan of OpenSCAD's example009, with two short
+/// polylines, the mesh was empty).
+template <class C3t3, class Domain>
+std::size_t insert_missed_initial_points(C3t3& c3t3, const Domain& domain, double distance) {
+  using Point_3 = typename Domain::Point_3;
+  std::vector<std::pair<Point_3, typename Domain::Index>> initial;
+  domain.construct_initial_points_object()(std::back_inserter(initial));
+  auto& tr = c3t3.triangulation();
+  std::vector<Point_3> surface;
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(c3t3.in_dimension(v) <= 2 && c3t3.has_incident_facets_in_complex(v)) surface.push_back(tr.point(v).point());
+  const auto cwp = tr.geom_traits().construct_weighted_point_3_object();
+  const double d2 = distance * distance;
+  std::size_t inserted = 0;
+  for(const auto& [p, index] : initial) {
+    if(std::any_of(surface.begin(), surface.end(),
+                   [&](const Point_3& q) { return CGAL::to_double(CGAL::squared_distance(p, q)) <= d2; }))
+      continue;
+    const auto v = tr.insert(cwp(p));
+    if(v == decltype(v)()) continue; // hidden by a protecting ball
+    c3t3.set_dimension(v, 2);
+    c3t3.set_index(v, index);
+    ++inserted;
+  }
+  return inserted;
+}
+
 /// Meshes the surface \f$f = 0\f$ with Mesh_3 (`make_mesh_3` on `Labeled_mesh_domain_3::
 /// create_implicit_mesh_domain`, polylines added with `add_features`), criteria facet angle,
 /// size and distance (edge size along the polylines), no cell criteria, no perturbation nor
@@ -472,10 +504,13 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
     const std::size_t max_vertices = in.feature_budget > 0 ? std::size_t(in.feature_budget * monitor.expected / 250) + 1 : 0;
     auto watchdog = watch();
     try {
+      const auto featured_options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop,
+                                                           params::maximal_number_of_vertices = max_vertices);
       c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
-                               params::manifold(),
-                               params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop,
-                                                      params::maximal_number_of_vertices = max_vertices));
+                               params::manifold(), featured_options);
+      if(!monitor.stop.load() && insert_missed_initial_points(c3t3, *featured, in.facet_size) > 0)
+        refine_mesh_3(c3t3, *featured, criteria, params::no_perturb(), params::no_exude(), params::no_reset_c3t3(),
+                      params::manifold(), featured_options);
     } catch(const Failure_exception&) {
       report.features_dropped = true;
       has_features = false;
