@@ -80,6 +80,7 @@ struct Settings {
   std::optional<Options::Space> space; // unset: mixed, quadratic with levin
   Options::Mesher mesher = Options::Mesher::MESH_3;
   bool features = true; // auto
+  bool remove_outliers = true;
   bool screening = true;
   double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
@@ -113,6 +114,10 @@ mls_tools::Argument_parser make_parser(Settings& s) {
   parser.add("--features", "auto|off", "protect sharp features (default: auto, see below)", [&s](const std::string& v) {
     s.features = mls_tools::parse_choice<bool>("--features", v, {{"auto", true}, {"off", false}});
   });
+  parser.add("--outliers", "remove|keep", "remove the isolated points first (default: remove, see below)",
+             [&s](const std::string& v) {
+               s.remove_outliers = mls_tools::parse_choice<bool>("--outliers", v, {{"remove", true}, {"keep", false}});
+             });
   parser.add("--screening", "on|off",
              "with wedge or mixed: project the smooth parts' seeds with levin, the others with the operator (default: on)",
              [&s](const std::string& v) {
@@ -142,6 +147,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
   std::cout
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
+       "                [--outliers remove|keep]\n"
        "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
        "                [--h H] [--threads N] [--time-limit T] [--parallel-mesher] [--quiet]\n"
        "\n"
@@ -161,6 +167,11 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "found by the projection are chained into polylines that Mesh_3 protects, so the mesh has\n"
        "edges along them and vertices at the corners. Otherwise (levin, plane, quadratic,\n"
        "surface_mesher) no feature is protected. --features off never protects any.\n"
+       "\n"
+       "Outliers (--outliers remove): a point whose 6 nearest neighbours are more than 3 times as far\n"
+       "as theirs are (root mean square, median of the 6), or more than 4 times the median over all\n"
+       "points, is removed before anything else; so is a region sampled more than 4 times as sparsely\n"
+       "as the median.\n"
        "\n"
        "Screening (--screening on): with wedge or mixed, the seeds of the implicit function (and the\n"
        "feature detection's points) are projected with levin first, and only those whose quadratic\n"
@@ -319,6 +330,7 @@ int run(int argc, char** argv) {
   options.space = choose_space(s);
   options.mesher = s.mesher;
   options.features = s.features;
+  options.remove_outliers = s.remove_outliers;
   options.parallel_mesher = s.parallel_mesher;
   options.facet_size = s.size;
   options.max_meshing_seconds = s.time_limit;
@@ -375,11 +387,14 @@ int run(int argc, char** argv) {
                                : ", " + std::to_string(report.off_surface_polylines) + " polylines off the surface dropped") +
                               (report.removed_components == 0 ? std::string()
                               : ", " + std::to_string(report.removed_components) + " component(s) away from the data removed");
+  const std::string outliers =
+    report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)";
   std::fprintf(stderr,
-               "%s: %zu points, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator, features "
+               "%s: %zu points%s, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator, features "
                "%.1f s: %zu queries, meshing %.1f s), %zu vertices, %zu facets, %zu feature polylines, %zu corners%s%s, %s, %s, "
                "output %s%s\n",
-               tool_name, input.size(), name_of(s.op, operator_choices).c_str(),
+               tool_name, input.size(),
+               outliers.c_str(), name_of(s.op, operator_choices).c_str(),
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds,
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,

@@ -136,6 +136,7 @@ group_errors() {
   expect_error "bad --operator" 2 "--operator|levin|unified" -- --input s.xyz --operator single
   expect_error "bad --mesher" 2 "--mesher|mesh3|surface_mesher" -- --input s.xyz --mesher marching_cubes
   expect_error "bad --features" 2 "--features|auto|off" -- --input s.xyz --features on
+  expect_error "bad --outliers" 2 "--outliers|remove|keep" -- --input s.xyz --outliers drop
   expect_error "zero --size" 2 "--size|> 0" -- --input s.xyz --size 0
   expect_error "negative --distance" 2 "--distance|> 0" -- --input s.xyz --distance -0.1
   expect_error "NaN --size" 2 "--size|> 0" -- --input s.xyz --size nan

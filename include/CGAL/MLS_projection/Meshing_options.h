@@ -72,6 +72,8 @@ struct Meshing_report {
   const char* failure = "";
   /// The finite input points used.
   std::size_t points = 0;
+  /// The finite input points removed as outliers (see `Meshing_options::remove_outliers`).
+  std::size_t outliers = 0;
   /// The average spacing (CGAL's `compute_average_spacing`, 6 neighbours).
   double average_spacing = 0;
   /// The bandwidth \f$h\f$ of the projection.
@@ -158,6 +160,11 @@ struct Meshing_options {
   /// the threads: it differs from run to run and with the number of threads. Without it, the
   /// output is bit-identical for any number of threads and across runs.
   bool parallel_mesher = false;
+  /// Remove the isolated points first: those whose 6 nearest neighbours lie at a root-mean-square
+  /// distance more than 3 times the median of that distance over the 6 neighbours, or 4 times its
+  /// median over all points (outliers off the surface; also a region sampled more than 4 times as
+  /// sparsely as the median). Default `true`; see `Meshing_report::outliers`.
+  bool remove_outliers = true;
   /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
   bool features = true;
   /// The facet size criterion; 0: 2 times the average spacing of the input.

@@ -18,6 +18,7 @@
 #include <CGAL/MLS_projection/detect_sharp_features.h>
 #include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/isolated_points.h>
 #include <CGAL/MLS_projection/internal/mesh_attributes.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
@@ -159,7 +160,8 @@ bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radi
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionFunctions
-/// Reconstructs a closed triangle mesh of the MLS surface of `points`: oriented normals (the
+/// Reconstructs a closed triangle mesh of the MLS surface of `points`: the isolated points removed
+/// (`Meshing_options::remove_outliers`), oriented normals (the
 /// input normals, or estimated and oriented, see `MLS_implicit_function`), the projection
 /// operator and function space of `options`, the implicit function of its local fits
 /// (`MLS_implicit_function`, mode and seeds from `options.implicit_function`), the sharp-feature
@@ -261,6 +263,23 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
       if(items.size() == 1) channels = attributes.size();
       if(attributes.size() - before != channels) return fail("the attribute values do not all have the same number of channels");
     }
+  }
+  if(options.remove_outliers) {
+    std::vector<internal::Vec<3>> coordinates(items.size());
+    for(std::size_t i = 0; i < items.size(); ++i)
+      coordinates[i] = internal::Vec<3>(CGAL::to_double(items[i].first.x()), CGAL::to_double(items[i].first.y()),
+                                        CGAL::to_double(items[i].first.z()));
+    const std::vector<bool> isolated = internal::isolated_points<ConcurrencyTag>(coordinates);
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < items.size(); ++i) {
+      if(isolated[i]) continue;
+      items[kept] = items[i];
+      std::copy_n(attributes.begin() + i * channels, channels, attributes.begin() + kept * channels);
+      ++kept;
+    }
+    out.outliers = items.size() - kept;
+    items.resize(kept);
+    attributes.resize(kept * channels);
   }
   out.points = items.size();
   if(items.size() < 10) return fail("too few points");
