@@ -419,7 +419,8 @@ std::size_t insert_missed_initial_points(C3t3& c3t3, const Domain& domain, doubl
   const auto cwp = tr.geom_traits().construct_weighted_point_3_object();
   const double d2 = distance * distance;
   std::size_t inserted = 0;
-  for(const auto& [p, index] : initial) {
+  for(const auto& [point, index] : initial) {
+    const Point_3& p = point; // a structured binding cannot be captured in C++17
     if(std::any_of(surface.begin(), surface.end(),
                    [&](const Point_3& q) { return CGAL::to_double(CGAL::squared_distance(p, q)) <= d2; }))
       continue;
