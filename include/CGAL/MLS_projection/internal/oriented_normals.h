@@ -72,6 +72,8 @@ struct Oriented_normals_report {
 ///    votes, oriented along the edge, have opposite signs: near a knife edge, where the two faces
 ///    lie within a spacing of each other and share their PCA normal, an edge along the surface
 ///    joins the two faces as if they were one sheet, and would turn one of them inside out.
+///    With `split_by_votes` false, no edge is skipped: the votes of an open scan see the inside
+///    of the scanned object through the opening, and split a face into trees turned opposite ways.
 /// 4. Each tree is turned outward as a whole: by the sign of the sum of its votes, or where that
 ///    is 0, by \f$\sum_i (p_i - c) \cdot n_i\f$, with \f$c\f$ the centroid of the tree (for a
 ///    closed surface, the sum is proportional to \f$\oint (x - c) \cdot n\, dA = 3V > 0\f$ whatever
@@ -86,7 +88,8 @@ struct Oriented_normals_report {
 template <class ConcurrencyTag, class GeomTraits>
 Oriented_normals_report estimate_oriented_normals(const std::vector<typename GeomTraits::Point_3>& points,
                                                   std::vector<typename GeomTraits::Vector_3>& normals, unsigned int k,
-                                                  const std::function<bool(double)>& progress = {}) {
+                                                  const std::function<bool(double)>& progress = {},
+                                                  bool split_by_votes = true) {
   using Point = typename GeomTraits::Point_3;
   using Vector = typename GeomTraits::Vector_3;
   using Item = std::pair<Point, Vector>;
@@ -194,7 +197,8 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   }
   if(!step(0.7)) return report;
 
-  // Kruskal's spanning forest, without the edges that would join two parts whose votes disagree;
+  // Kruskal's spanning forest, without the edges that would join two parts whose votes disagree
+  // (with split_by_votes);
   // union-find with parities (a point flipped relative to its parent), each root holding the sum
   // of its part's votes in its own frame
   std::vector<std::uint32_t> up(n);
@@ -228,7 +232,7 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
     if(a == b) continue;
     const std::uint8_t x = fa ^ fb ^ std::uint8_t(e.flips); // b's frame relative to a's
     const int vb = x ? -vote_sum[b] : vote_sum[b];
-    if((vote_sum[a] > 0 && vb < 0) || (vote_sum[a] < 0 && vb > 0)) continue;
+    if(split_by_votes && ((vote_sum[a] > 0 && vb < 0) || (vote_sum[a] < 0 && vb > 0))) continue;
     auto [child, root] = height[a] < height[b] ? std::make_pair(a, b) : std::make_pair(b, a);
     if(height[a] == height[b]) ++height[root];
     up[child] = root;
