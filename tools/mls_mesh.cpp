@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// mls_mesh: meshes the MLS surface of a 3D point set into a closed, manifold OFF triangle mesh,
+// mls_mesh: meshes the MLS surface of a 3D point set into a closed, manifold OFF triangle mesh (with
+// --open, a mesh with a boundary where the data ends),
 // with CGAL's Mesh_3 (sharp features protected) or Surface_mesher, through
 // CGAL::MLS::mls_surface_reconstruction(). Run `mls_mesh --help` for the usage. Without --input it
 // meshes a built-in point set sampled from an analytic solid with sharp edges, corners and a
@@ -81,6 +82,7 @@ struct Settings {
   Options::Mesher mesher = Options::Mesher::MESH_3;
   bool features = true; // auto
   bool remove_outliers = true;
+  bool open = false;
   bool screening = true;
   double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
@@ -136,6 +138,8 @@ mls_tools::Argument_parser make_parser(Settings& s) {
              [&s](const std::string& v) { s.threads = mls_tools::parse_positive_int("--threads", v, 4096); });
   parser.add("--time-limit", "T", "stop meshing (and fail) after T seconds of the mesher, > 0 (default: no limit)",
              [&s](const std::string& v) { s.time_limit = mls_tools::parse_positive_double("--time-limit", v); });
+  parser.add_flag("--open", "the input is an open scan: mesh only where there is data, with a boundary (see below)",
+                  [&s] { s.open = true; });
   parser.add_flag("--parallel-mesher",
                   "mesh3 refines in parallel too: faster on large meshes, but the mesh then depends on the threads' scheduling",
                   [&s] { s.parallel_mesher = true; });
@@ -147,12 +151,13 @@ void print_help(const mls_tools::Argument_parser& parser) {
   std::cout
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
-       "                [--outliers remove|keep]\n"
+       "                [--outliers remove|keep] [--open]\n"
        "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
        "                [--h H] [--threads N] [--time-limit T] [--parallel-mesher] [--quiet]\n"
        "\n"
        "Meshes the moving-least-squares (MLS) surface of a 3D point set into a closed, manifold\n"
-       "triangle mesh (OFF), with CGAL's Mesh_3 or Surface_mesher.\n"
+       "triangle mesh (OFF), with CGAL's Mesh_3 or Surface_mesher; with --open, a manifold mesh with\n"
+       "a boundary where the data ends.\n"
        "\n"
        "Options:\n";
   parser.print_options(std::cout);
@@ -172,6 +177,12 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "as theirs are (root mean square, median of the 6), or more than 4 times the median over all\n"
        "points, is removed before anything else; so is a region sampled more than 4 times as sparsely\n"
        "as the median.\n"
+       "\n"
+       "Open scans (--open): the input is a part of a surface (scanned from one side, or with its\n"
+       "border in view): the surface is meshed where there is data only, up to 2 average spacings\n"
+       "beyond the last points, as a manifold mesh with a boundary along the scan's border (and along\n"
+       "the holes wider than about 4 spacings). Coplanar points are then accepted. mesh3 only.\n"
+       "Without --open the surface is closed, and an open scan fails (\"the surface is not closed\").\n"
        "\n"
        "Screening (--screening on): with wedge or mixed, the seeds of the implicit function (and the\n"
        "feature detection's points) are projected with levin first, and only those whose quadratic\n"
@@ -202,7 +213,8 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "\n"
        "Progress bars on stderr (when it is a terminal and without --quiet) for the long stages; the\n"
        "last line of stderr is the summary: points, operator/space, mesher, seconds, vertices,\n"
-       "facets, the feature polylines and corners protected, closed or not, manifold or not.\n"
+       "facets, the feature polylines and corners protected, closed or not (open, with the number of\n"
+       "boundary cycles, with --open), manifold or not.\n"
        "\n"
        "Exit status: 0 on success, 1 on a bad input or output file or a failed meshing, 2 on a bad\n"
        "command line.\n";
@@ -331,6 +343,8 @@ int run(int argc, char** argv) {
   options.mesher = s.mesher;
   options.features = s.features;
   options.remove_outliers = s.remove_outliers;
+  options.open_surface = s.open;
+  if(s.open && s.mesher != Options::Mesher::MESH_3) throw Usage_error("--open meshes with --mesher mesh3 only");
   options.parallel_mesher = s.parallel_mesher;
   options.facet_size = s.size;
   options.max_meshing_seconds = s.time_limit;
@@ -347,7 +361,7 @@ int run(int argc, char** argv) {
   if(input.dimension != 3)
     throw Input_error(input_name + " holds 2D points: mls_mesh meshes surfaces of 3D point sets");
   mls_tools::check_point_cloud(input, minimum_points, input_name);
-  check_not_coplanar(input, input_name);
+  if(!s.open) check_not_coplanar(input, input_name);
 
 #ifdef CGAL_LINKED_WITH_TBB
   std::optional<tbb::global_control> thread_limit;
@@ -387,6 +401,10 @@ int run(int argc, char** argv) {
                                : ", " + std::to_string(report.off_surface_polylines) + " polylines off the surface dropped") +
                               (report.removed_components == 0 ? std::string()
                               : ", " + std::to_string(report.removed_components) + " component(s) away from the data removed");
+  const std::string closure = closed ? "closed"
+                              : s.open ? "open (" + std::to_string(report.boundary_cycles) + " boundary cycle" +
+                                           (report.boundary_cycles == 1 ? ")" : "s)")
+                                       : "not closed";
   const std::string outliers =
     report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)";
   std::fprintf(stderr,
@@ -398,7 +416,7 @@ int run(int argc, char** argv) {
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds,
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
-               report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", removed.c_str(), closed ? "closed" : "not closed", manifold ? "manifold" : "not manifold", s.output.c_str(), written.c_str());
+               report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", removed.c_str(), closure.c_str(), manifold ? "manifold" : "not manifold", s.output.c_str(), written.c_str());
   return 0;
 }
 

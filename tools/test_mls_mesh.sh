@@ -207,6 +207,42 @@ group_meshing() {
         fail "box, defaults, 1 thread" "the mesh differs from the one of all threads"
     fi
   fi
+  # An open scan: the same box without its top face (500 points), --open: a manifold mesh with
+  # one boundary cycle, the rim of the top; none of its vertices farther above the rim than the
+  # cut at 2 average spacings from the data (0.114: 4 neighbours at 0.1, 2 at 0.141) and the
+  # tenth of a spacing within which a vertex counts as on it, nor off the box's planes by more
+  # than a tenth of the spacing.
+  awk '$6 != 1' "$DIR/box.pwn" >"$DIR/tray.pwn"
+  run --input tray.pwn --output tray.off --quiet --open
+  summary=$(tail -n 1 "$TMP/stderr")
+  if [ "$RC" -ne 0 ]; then
+    fail "open box" "exit code $RC (stderr: $ERR)"
+  elif ! grep -q "^mls_mesh: 500 points, .* feature polylines, .* corners, open (1 boundary cycle), manifold, output " <<<"$summary"; then
+    fail "open box" "not an open manifold mesh with one boundary cycle: $summary"
+  elif ! off_lines "$DIR/tray.off" | awk 'NR == 2 { nv = $1 } NR > 2 && NR <= 2 + nv {
+         d = 1; for(a = 1; a <= 3; a++) { e = 0.5 - ($a < 0 ? -$a : $a); if(e < 0) e = -e; if(e < d) d = e }
+         if($3 > 0.5 + 2.1 * 0.114 || d > 0.01) bad++ } END { exit bad > 0 }'; then
+    fail "open box" "a vertex off the box or above its rim in tray.off"
+  else
+    pass "open box: $summary"
+  fi
+  expect_error "--open with surface_mesher" 2 "--open|mesh3" -- --input tray.pwn --open --mesher surface_mesher
+  # Coplanar points with --open: the unit disc sampled on a grid of step 0.05 (1249 points) is a
+  # flat mesh with one boundary cycle: every vertex on the plane (to the mesher's intersection
+  # error, 1e-6 of the bounding radius, and the Newton steps' 1e-4 facet distances) and within
+  # the cut at 2.1 average spacings (0.0569: 4 neighbours at 0.05, 2 at 0.0707) of the disc.
+  awk 'BEGIN { for(i = -20; i <= 20; i++) for(j = -20; j <= 20; j++) { x = i * 0.05; y = j * 0.05
+    if(x * x + y * y <= 1) printf "%.17g %.17g 0\n", x, y } }' >"$DIR/disc.xyz"
+  run --input disc.xyz --output disc.off --quiet --open
+  summary=$(tail -n 1 "$TMP/stderr")
+  if [ "$RC" -ne 0 ] || ! grep -q ", open (1 boundary cycle), manifold, output " <<<"$summary"; then
+    fail "open disc" "not an open manifold mesh with one boundary cycle (exit code $RC): $summary"
+  elif ! off_lines "$DIR/disc.off" | awk 'NR == 2 { nv = $1 } NR > 2 && NR <= 2 + nv {
+         if(($3 < 0 ? -$3 : $3) > 1e-5 || sqrt($1 * $1 + $2 * $2) > 1 + 2.1 * 0.0569) bad++ } END { exit bad > 0 }'; then
+    fail "open disc" "a vertex off the plane or beyond the cut in disc.off"
+  else
+    pass "open disc: $summary"
+  fi
   # Attributes: the same box as PLY with one colour per face (and normals). The .ply output holds
   # the colours per vertex; each vertex on one face only (one coordinate at +-0.5) takes exactly
   # that face's colour, a vertex on an edge one of its two faces' (the wedge fan's faces keep the

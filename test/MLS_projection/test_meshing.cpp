@@ -770,6 +770,53 @@ MLS_TEST(outliers_removed_builtin_solid) {
   check_closed_mesh(c, 0, report.bandwidth);
 }
 
+// An open scan: the built-in solid's samples below z = 0.1 (its bottom face with the bore's hole,
+// the lower parts of its sides and of the bore), without normals, meshed with `open_surface` and
+// the defaults. The mesh is a manifold with two boundary cycles (the rim of the sides and the
+// rim of the bore), without self-intersection, on the solid: its vertices within the bound of the
+// closed mesh (builtin_solid_default_mesh, h/4), and none farther from the data than the margin
+// of 2 average spacings where the mesh is clipped (plus the tenth of a spacing within which a
+// vertex counts as on the cut). It covers the data: every sample within a facet size of a
+// vertex. Its creases are protected.
+MLS_TEST(open_scan_meshed_where_the_data_is) {
+  const mls_tools::Bored_filleted_box solid;
+  const mls_tools::Point_cloud cloud = mls_tools::builtin_solid_points();
+  const double cut = 0.1, spacing = 0.03;
+  std::vector<Point> points;
+  for(const auto& p : cloud.points)
+    if(p[2] < cut) points.emplace_back(p[0], p[1], p[2]);
+  Options options;
+  options.open_surface = true;
+  CGAL::MLS::Meshing_report report;
+  options.report = &report;
+  Mesh m;
+  const auto t0 = std::chrono::steady_clock::now();
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, m, options));
+  const Mesh_check c = check_mesh(m, [&](const Point& q) { return solid.signed_distance({q.x(), q.y(), q.z()}); });
+  print("open scan of the built-in solid", c, seconds_since(t0), report.bandwidth);
+  double highest = -std::numeric_limits<double>::infinity();
+  for(auto v : vertices(m)) highest = (std::max)(highest, CGAL::to_double(m.point(v).z()));
+  std::vector<Point> mesh_points(m.points().begin(), m.points().end());
+  const CGAL::MLS::Sample_set<K, 3> vertex_set(mesh_points);
+  double uncovered = 0;
+  for(const Point& p : points)
+    uncovered = (std::max)(uncovered, vertex_set.kth_neighbor_distance(vertex_set.to_local(p), 1));
+  std::cout << "  " << report.boundary_cycles << " boundary cycles, " << report.feature_polylines
+            << " feature polylines, highest vertex z = " << highest << " (data below " << cut
+            << "), farthest sample from a vertex " << uncovered / spacing << " spacings" << std::endl;
+  MLS_CHECK(c.faces > 1000);
+  MLS_CHECK(c.valid);
+  MLS_CHECK(!c.closed);
+  MLS_CHECK(!c.self_intersecting);
+  MLS_CHECK_MSG(c.distinct_positions == c.vertices, "non-manifold vertices (duplicated positions)");
+  MLS_CHECK_MSG(report.boundary_cycles == 2, std::to_string(report.boundary_cycles) + " boundary cycles");
+  MLS_CHECK_LE(c.max_error, 0.25 * report.bandwidth);
+  MLS_CHECK_LE(highest, cut + 2.1 * report.average_spacing);
+  MLS_CHECK_LE(uncovered, report.facet_size);
+  MLS_CHECK(report.feature_polylines >= 4);
+  MLS_CHECK(!report.features_dropped);
+}
+
 // The components of a mesh away from the data are removed, the nearest one kept: two unit
 // icosahedra 4 apart, the data on the first one's vertices. Bound 0.5: the second's vertices are
 // at least 2 from the data, the first's on it.

@@ -111,6 +111,9 @@ struct Meshing_report {
   /// Connected components of the mesher's output removed as unsupported by the data (see
   /// `mls_surface_reconstruction()`).
   std::size_t removed_components = 0;
+  /// With `Meshing_options::open_surface`: the boundary cycles of the mesh (the borders of the
+  /// scan and of its holes).
+  std::size_t boundary_cycles = 0;
   /// The criteria used.
   /// @{
   double facet_size = 0, facet_distance = 0;
@@ -167,6 +170,11 @@ struct Meshing_options {
   bool remove_outliers = true;
   /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
   bool features = true;
+  /// The input is an open scan (a part of a surface, e.g. scanned from one side): mesh the
+  /// surface only where there is data, up to 2 average spacings beyond the last points, as a mesh
+  /// with a boundary (`Mesh_3` only; see the manual, "Open Scans"). Default `false`: the surface
+  /// is closed.
+  bool open_surface = false;
   /// The facet size criterion; 0: 2 times the average spacing of the input.
   double facet_size = 0;
   /// The facet distance criterion; 0: 0.25 times the average spacing.

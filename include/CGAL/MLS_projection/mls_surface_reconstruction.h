@@ -21,10 +21,12 @@
 #include <CGAL/MLS_projection/internal/isolated_points.h>
 #include <CGAL/MLS_projection/internal/mesh_attributes.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
+#include <CGAL/MLS_projection/internal/open_surface.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/internal/unsupported_components.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/compute_average_spacing.h>
@@ -92,52 +94,65 @@ std::size_t drop_polylines_off_surface(std::vector<std::vector<Point_3>>& polyli
   return before - polylines.size();
 }
 
-/// Fits the vertices of `polylines` to the surface \f$f = 0\f$: those further than `facet_distance`
-/// from it (in \f$|f|\f$) are removed, splitting their polylines (pieces of fewer than 2 vertices
-/// are dropped), and the others are moved onto it by Newton steps along the gradient of \f$f\f$
-/// (central differences), until \f$|f| \le\f$ `tolerance` (at most 8 steps, the best point kept).
-/// Mesh_3 centres its protecting balls on the polylines and never moves them: next to a centre off
-/// the surface, its manifold refinement could not make the surface a disk and looped without end.
-/// A vertex moves the same wherever it occurs (corners, the ends of a closed polyline).
-template <class Point_3, class Function>
-void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f, double facet_distance,
-                              double tolerance) {
-  using Vector_3 = typename Kernel_traits<Point_3>::Kernel::Vector_3;
-  const auto value = [&f](const Point_3& p) { return CGAL::to_double(f(p)); };
-  const auto snapped = [&](Point_3 p, double v) {
-    const double e = 1e-3 * facet_distance;
-    Point_3 best = p;
-    double best_v = std::abs(v);
-    for(int it = 0; it < 8 && best_v > tolerance; ++it) {
-      const Vector_3 g((value(p + Vector_3(e, 0, 0)) - value(p - Vector_3(e, 0, 0))) / (2 * e),
-                       (value(p + Vector_3(0, e, 0)) - value(p - Vector_3(0, e, 0))) / (2 * e),
-                       (value(p + Vector_3(0, 0, e)) - value(p - Vector_3(0, 0, e))) / (2 * e));
-      const double g2 = CGAL::to_double(g.squared_length());
-      if(!(g2 > 1e-12)) break;
-      p = p - g * (v / g2);
-      v = value(p);
-      if(std::abs(v) < best_v) {
-        best = p;
-        best_v = std::abs(v);
-      }
-    }
-    return best;
-  };
-  std::vector<std::vector<Point_3>> fitted;
+/// Removes from `polylines` the vertices where `keep(vertex)` is false, splitting the polylines
+/// there; pieces of fewer than 2 vertices are dropped.
+template <class Point_3, class Keep>
+void cut_polylines(std::vector<std::vector<Point_3>>& polylines, const Keep& keep) {
+  std::vector<std::vector<Point_3>> cut;
   for(const std::vector<Point_3>& line : polylines) {
     std::vector<Point_3> piece;
     for(const Point_3& p : line) {
-      const double v = value(p);
-      if(std::abs(v) <= facet_distance) {
-        piece.push_back(snapped(p, v));
+      if(keep(p)) {
+        piece.push_back(p);
         continue;
       }
-      if(piece.size() >= 2) fitted.push_back(std::move(piece));
+      if(piece.size() >= 2) cut.push_back(std::move(piece));
       piece.clear();
     }
-    if(piece.size() >= 2) fitted.push_back(std::move(piece));
+    if(piece.size() >= 2) cut.push_back(std::move(piece));
   }
-  polylines = std::move(fitted);
+  polylines = std::move(cut);
+}
+
+/// The point \f$p\f$ moved onto the surface \f$f = 0\f$ by Newton steps along the gradient of \f$f\f$
+/// (central differences of step `step`), until \f$|f| \le\f$ `tolerance` (at most 8 steps, the
+/// best point kept).
+template <class Point_3, class Function>
+Point_3 snap_to_surface(Point_3 p, const Function& f, double step, double tolerance) {
+  using Vector_3 = typename Kernel_traits<Point_3>::Kernel::Vector_3;
+  const auto value = [&f](const Point_3& q) { return CGAL::to_double(f(q)); };
+  const double e = step;
+  double v = value(p);
+  Point_3 best = p;
+  double best_v = std::abs(v);
+  for(int it = 0; it < 8 && best_v > tolerance; ++it) {
+    const Vector_3 g((value(p + Vector_3(e, 0, 0)) - value(p - Vector_3(e, 0, 0))) / (2 * e),
+                     (value(p + Vector_3(0, e, 0)) - value(p - Vector_3(0, e, 0))) / (2 * e),
+                     (value(p + Vector_3(0, 0, e)) - value(p - Vector_3(0, 0, e))) / (2 * e));
+    const double g2 = CGAL::to_double(g.squared_length());
+    if(!(g2 > 1e-12)) break;
+    p = p - g * (v / g2);
+    v = value(p);
+    if(std::abs(v) < best_v) {
+      best = p;
+      best_v = std::abs(v);
+    }
+  }
+  return best;
+}
+
+/// Fits the vertices of `polylines` to the surface \f$f = 0\f$: those further than `facet_distance`
+/// from it (in \f$|f|\f$) are removed (`cut_polylines()`), and the others are moved onto it
+/// (`snap_to_surface()`, step \f$10^{-3}\f$ facet distances). Mesh_3 centres its protecting balls
+/// on the polylines and never moves them: next to a centre off the surface, its manifold refinement
+/// could not make the surface a disk and looped without end. A vertex moves the same wherever it
+/// occurs (corners, the ends of a closed polyline).
+template <class Point_3, class Function>
+void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f, double facet_distance,
+                              double tolerance) {
+  cut_polylines(polylines, [&](const Point_3& p) { return std::abs(CGAL::to_double(f(p))) <= facet_distance; });
+  for(std::vector<Point_3>& line : polylines)
+    for(Point_3& p : line) p = snap_to_surface(p, f, 1e-3 * facet_distance, tolerance);
 }
 
 /// Whether `f` is positive at 256 points spread evenly over the sphere (Fibonacci lattice):
@@ -242,6 +257,8 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
   if(options.projection_operator == Meshing_options::Operator::LEVIN &&
      (options.space == Meshing_options::Space::WEDGE || options.space == Meshing_options::Space::MIXED))
     return fail("Levin's operator takes the plane or quadratic space only");
+  if(options.open_surface && options.mesher != Meshing_options::Mesher::MESH_3)
+    return fail("an open surface is meshed with Mesh_3 only");
 
   // 1. the finite points (and normals and attributes), oriented normals when none is given
   const auto point_map = NP_helper::get_const_point_map(points, np);
@@ -295,7 +312,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     if(!report("normals", 0., 0.1, 0.)) return fail("cancelled");
     const auto r = internal::estimate_oriented_normals<ConcurrencyTag, K>(
       pts, normals, static_cast<unsigned int>((std::max)(3, options.implicit_function.normal_neighbors)),
-      slice("normals", 0., 0.1));
+      slice("normals", 0., 0.1), !options.open_surface);
     if(!r.completed || normals.size() != items.size()) return fail("cancelled");
     for(std::size_t i = 0; i < items.size(); ++i) items[i].second = normals[i];
     out.normals_by_fallback = r.oriented_by_fallback;
@@ -314,6 +331,13 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
   Projection_options projection_options;
   projection_options.bandwidth = options.bandwidth;
   projection_options.one_sided = true;
+  // Open scans: the surface is kept within `margin` of the data. The slab is 2 facet sizes deep
+  // (Mesh_3 refines thinner sheets at length) and reaches a facet size beyond the margin, so
+  // that its wall's facets are cut away whole, and a spacing beyond its depth, so that the data
+  // do not pierce it.
+  const double facet_size = options.facet_size > 0 ? options.facet_size : 2. * spacing, margin = 2. * spacing;
+  const double depth = 2. * facet_size;
+  const internal::Open_surface_slab slab{depth, (std::max)(margin + facet_size, depth + spacing)};
 
   const auto run = [&](const auto& projection) -> bool {
     using Projection = std::decay_t<decltype(projection)>;
@@ -321,7 +345,14 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     // 2. the implicit function (the seeds are projected once)
     const auto t_seeds = Clock::now();
     if(!report("seeds", 0.1, 0.5, 0.)) return fail("cancelled");
-    const Function function(projection, options.implicit_function, ConcurrencyTag(), slice("seeds", 0.1, 0.5));
+    // In an open scan's slab, f is the blend of the local fits (continuous), not the far value,
+    // whose sign comes from votes that change abruptly beyond the scan's border.
+    Implicit_function_options function_options = options.implicit_function;
+    if(options.open_surface && projection.bandwidth() > 0) {
+      function_options.far_start = (std::max)(function_options.far_start, slab.reach / projection.bandwidth() + 1.);
+      function_options.far_end = (std::max)(function_options.far_end, function_options.far_start + 1.);
+    }
+    const Function function(projection, function_options, ConcurrencyTag(), slice("seeds", 0.1, 0.5));
     out.seconds_seeds = since(t_seeds);
     out.bandwidth = function.bandwidth();
     out.seeds = function.number_of_seeds();
@@ -341,6 +372,9 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
       polylines = internal::feature_polylines<ConcurrencyTag>(function, corners, out.feature_queries);
     const double facet_distance = options.facet_distance > 0 ? options.facet_distance : 0.25 * spacing;
     out.off_surface_polylines = internal::drop_polylines_off_surface(polylines, function, facet_distance);
+    // the distance to the nearest input point
+    const auto data_distance = [samples](const Point_3& p) { return samples->kth_neighbor_distance(samples->to_local(p), 1); };
+    if(options.open_surface) internal::cut_polylines(polylines, [&](const Point_3& p) { return data_distance(p) <= margin; });
     internal::fit_polylines_to_surface(polylines, function, facet_distance, 1e-4 * facet_distance);
     out.feature_polylines = polylines.size();
     out.corners = corners;
@@ -358,25 +392,44 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
     // Beyond the sphere, the value is the distance to it, without evaluating f there (the points
     // far out are many, and far from every seed).
-    in.function = [function, centre, radius](const Point_3& p) {
-      const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
-      return outside > 0 ? outside : (std::max)(CGAL::to_double(function(p)), outside);
-    };
-    in.inner_point = function.get_inner_point();
+    if(options.open_surface) {
+      // the slab, without evaluating f where the slab's function is positive whatever f is
+      in.function = [function, data_distance, slab, centre, radius](const Point_3& p) {
+        const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+        if(outside > 0) return outside;
+        const double d = data_distance(p);
+        if(d > slab.reach) return d - slab.reach;
+        return (std::max)(slab.value(CGAL::to_double(function(p)), d), outside);
+      };
+    } else {
+      in.function = [function, centre, radius](const Point_3& p) {
+        const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+        return outside > 0 ? outside : (std::max)(CGAL::to_double(function(p)), outside);
+      };
+    }
+    const auto& seeds = function.projected_seeds();
+    in.inner_point = options.open_surface && !seeds.empty() ? seeds[0].point - seeds[0].normal * (0.5 * slab.depth)
+                                                            : function.get_inner_point();
     // the sphere check on the function itself (the clamped one is 0 on the sphere)
-    if(!internal::is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
+    if(!options.open_surface &&
+       !internal::is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
                                         radius))
       return fail("the surface is not closed (its inside reaches the bounding sphere: the points bound no volume, e.g. "
                   "coplanar points or an open scan, or the sides of a thin part were not told apart)");
     if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
-    const auto& seeds = function.projected_seeds();
+    // from inside to outside across the surface (for the slab, from its middle)
+    const double below = options.open_surface ? 0.5 * slab.depth : h;
     const std::size_t stride = (std::max<std::size_t>)(1, seeds.size() / 128);
     for(std::size_t i = 0; i < seeds.size(); i += stride) {
-      const Vector_3 n = seeds[i].normal * h;
-      in.probes.emplace_back(seeds[i].point - n, seeds[i].point + n);
+      const Point_3& p = seeds[i].point;
+      const Vector_3& n = seeds[i].normal;
+      in.probes.emplace_back(p - n * below, p + n * h);
+      // and across the slab's back: the points on a flat scan alone are coplanar, and Mesh_3 finds
+      // no cell to refine in their triangulation
+      if(options.open_surface) in.probes.emplace_back(p - n * below, p - n * (1.5 * slab.depth));
     }
     in.polylines = std::move(polylines);
-    in.facet_size = options.facet_size > 0 ? options.facet_size : 2. * spacing;
+    in.facet_size = facet_size;
     in.facet_distance = facet_distance;
     in.edge_size = options.edge_size > 0 ? options.edge_size : 0.75 * in.facet_size;
     in.facet_angle = options.facet_angle;
@@ -409,13 +462,32 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.features_dropped = r.features_dropped;
     out.feature_budget_exceeded = r.feature_budget_exceeded;
     if(!r.success) return fail(r.cancelled ? "cancelled" : r.message);
+    const auto to_point = [](const auto& q) { return Point_3(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())); };
+    if(options.open_surface) {
+      // the facets on the surface (not on the back), clipped where the distance to the data is
+      // `margin`, the new vertices on the surface
+      const auto vpm = get(CGAL::vertex_point, mesh);
+      const auto on_surface = [&](const auto f) {
+        const auto h0 = halfedge(f, mesh);
+        const Point_3 c = CGAL::centroid(to_point(get(vpm, source(h0, mesh))), to_point(get(vpm, target(h0, mesh))),
+                                         to_point(get(vpm, target(next(h0, mesh), mesh))));
+        return slab.on_surface(CGAL::to_double(function(c)));
+      };
+      const auto level = [&](const auto& q) { return data_distance(to_point(q)) - margin; };
+      const auto place = [&](const auto& q) {
+        const Point_3 p = internal::snap_to_surface(to_point(q), function, 1e-3 * facet_distance, 1e-4 * facet_distance);
+        return typename std::decay_t<decltype(q)>(p.x(), p.y(), p.z());
+      };
+      if(internal::clip_mesh(mesh, on_surface, level, place, 0.1 * spacing) == 0)
+        return fail("empty mesh (no facet on the surface within reach of the data)");
+    }
     out.removed_components = internal::remove_unsupported_components(
-      mesh,
-      [&](const auto& q) {
-        const Point_3 p(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
-        return samples->kth_neighbor_distance(samples->to_local(p), 1);
-      },
-      0.5 * h);
+      mesh, [&](const auto& q) { return data_distance(to_point(q)); }, 0.5 * h);
+    if(options.open_surface) {
+      std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> cycles;
+      Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+      out.boundary_cycles = cycles.size();
+    }
     if constexpr(has_attributes)
       internal::interpolate_vertex_attributes<ConcurrencyTag>(function.seed_projection(), function.projected_seeds(), mesh,
                                                             get_parameter(np, internal_np::mls_vertex_attribute_map));
