@@ -408,7 +408,8 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
       };
     }
     const auto& seeds = function.projected_seeds();
-    in.inner_point = options.open_surface && !seeds.empty() ? seeds[0].point - seeds[0].normal * (0.5 * slab.depth)
+    // for the slab, half a spacing under a seed (a thin part may be thinner than the slab is deep)
+    in.inner_point = options.open_surface && !seeds.empty() ? seeds[0].point - seeds[0].normal * (0.5 * spacing)
                                                             : function.get_inner_point();
     // the sphere check on the function itself (the clamped one is 0 on the sphere)
     if(!options.open_surface &&
