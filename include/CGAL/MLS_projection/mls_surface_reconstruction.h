@@ -392,21 +392,15 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
     // Beyond the sphere, the value is the distance to it, without evaluating f there (the points
     // far out are many, and far from every seed).
-    if(options.open_surface) {
-      // the slab, without evaluating f where the slab's function is positive whatever f is
-      in.function = [function, data_distance, slab, centre, radius](const Point_3& p) {
-        const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
-        if(outside > 0) return outside;
-        const double d = data_distance(p);
-        if(d > slab.reach) return d - slab.reach;
-        return (std::max)(slab.value(CGAL::to_double(function(p)), d), outside);
-      };
-    } else {
-      in.function = [function, centre, radius](const Point_3& p) {
-        const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
-        return outside > 0 ? outside : (std::max)(CGAL::to_double(function(p)), outside);
-      };
-    }
+    // For an open scan, the slab, without evaluating f where its function is positive whatever f is.
+    in.function = [function, data_distance, slab, open = options.open_surface, centre, radius](const Point_3& p) {
+      const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+      if(outside > 0) return outside;
+      if(!open) return (std::max)(CGAL::to_double(function(p)), outside);
+      const double d = data_distance(p);
+      if(d > slab.reach) return d - slab.reach;
+      return (std::max)(slab.value(CGAL::to_double(function(p)), d), outside);
+    };
     const auto& seeds = function.projected_seeds();
     // for the slab, half a spacing under a seed (a thin part may be thinner than the slab is deep)
     in.inner_point = options.open_surface && !seeds.empty() ? seeds[0].point - seeds[0].normal * (0.5 * spacing)
