@@ -17,12 +17,15 @@ noise level (points without normals). On each scan run, one after the other, sev
 The times are medians of the runs (wall clock of the whole process: reading, the search
 structure, projecting, writing); the errors are the distances of the output points to the
 part's mesh as fractions of its bounding-box diagonal (RMS and maximum).
+With --meshing, mls_mesh and CGAL's Poisson mesh the same scans (or, with --defects, scans with
+the defects of real scans: sparse, outliers, a hole, open), measured by `scan_part mesh`.
 """
 
 import argparse
 import filecmp
 import math
 import os
+import random
 import re
 import statistics
 import subprocess
@@ -37,6 +40,11 @@ PARTS = {  # name: (OpenSCAD file or source, definitions)
     "example009": (EXAMPLES + "example009.scad", []),  # a fan: thin blades
     # smooth, no crease: the hull of an ellipsoid and a sphere
     "blob": ("hull() { scale([1, 0.7, 0.5]) sphere(r=10, $fn=120); translate([9, 0, 3]) sphere(r=4, $fn=90); }", []),
+}
+# The defects of real scans (--defects), per part: a point of a crease, the centre of the hole, and
+# the cut of the open scan (the points with coordinate `axis` below `below` are kept).
+DEFECTS = {
+    "example002": {"crease_point": (9.5, 0., 15.), "axis": 2, "below": -2.},  # the top rim; the lower half
 }
 
 
@@ -156,14 +164,15 @@ def scaled_scan(tools, mesh, work, part, noise, args, log):
     return scan, scaled
 
 
-def measure_meshing(tools, mesh, scan, args, log):
-    """mls_mesh with its defaults and poisson_mesh on `scan`, both on all cores; their time, peak
-    memory and `scan_part mesh` figures against the part `mesh`. mls_mesh again with one thread:
-    its speed-up on all cores and whether the two meshes are the same, byte for byte."""
+def measure_meshing(tools, mesh, scan, args, log, mls_options=()):
+    """mls_mesh with its defaults (and `mls_options`) and poisson_mesh on `scan`, both on all cores;
+    their time, peak memory and `scan_part mesh` figures against the part `mesh`. mls_mesh again
+    with one thread: its speed-up on all cores and whether the two meshes are the same, byte for
+    byte."""
     d = os.path.dirname(scan)
     rows = []
     cases = {
-        "MLS": [tools["mls_mesh"], "--input", scan, "--output", os.path.join(d, "mls.off"), "--quiet"],
+        "MLS": [tools["mls_mesh"], "--input", scan, "--output", os.path.join(d, "mls.off"), "--quiet", *mls_options],
         "Poisson": [tools["poisson_mesh"], scan, os.path.join(d, "poisson.off")],
     }
     for name, cmd in cases.items():
@@ -174,10 +183,15 @@ def measure_meshing(tools, mesh, scan, args, log):
         row = {"method": name, "seconds": seconds, "memory": memory, "message": message}
         if status is None:
             row["message"] = "no mesh: stopped after %.0f s" % args.timeout
+        elif status < 0:
+            row["message"] = "no mesh: crashed (signal %d)" % -status
         elif status != 0:
             row["message"] = "no mesh: " + re.sub(r"^.*failed: ", "", message)
         fields = output_of([tools["scan_part"], "mesh", mesh, out]).split() if os.path.exists(out) else ["none"]
         row.update(dict(zip(fields[0::2], fields[1::2])))
+        if os.path.exists(out):  # the mesh's vertices to the part, the scan to the mesh (what an open scan allows)
+            row["vertex_rms"], row["vertex_max"] = distances(tools, mesh, out)
+            row["scan_rms"], _ = distances(tools, out, scan)
         log("    %-8s %.1f s %s" % (name, seconds, " ".join(fields)))
         if name == "MLS" and status == 0:
             single = os.path.join(d, "mls_1_thread.off")
@@ -189,6 +203,72 @@ def measure_meshing(tools, mesh, scan, args, log):
                 log("    1 thread %.1f s, %s mesh" % (seconds1, "the same" if row["same_mesh"] else "another"))
         rows.append(row)
     return rows
+
+
+def read_xyz(path):
+    with open(path) as f:
+        return [tuple(float(v) for v in line.split()[:3]) for line in f if line.strip()]
+
+
+def write_xyz(path, points):
+    with open(path, "w") as f:
+        f.writelines("%.9g %.9g %.9g\n" % p for p in points)
+
+
+def defect_scans(tools, mesh, part, work, args):
+    """The scans with the defects of real scans, of `part` (noiseless, seed 1): (name, scan,
+    mls_mesh options). Sparse: 1000 and 3000 points. Outliers: `--defect-points` points and 5 %
+    more uniform in the bounding box enlarged by 10 %. Hole: `--defect-points` points without those
+    within 3 % of the diagonal of a point of a crease. Open: twice as many points, of which those
+    on one side of a plane (a scan from one side), meshed with `mls_mesh --open`."""
+    def sample(n, name):
+        d = os.path.join(work, "%s_%s" % (part, name))
+        os.makedirs(d, exist_ok=True)
+        scan = os.path.join(d, "scan.xyz")
+        subprocess.run([tools["scan_part"], "sample", mesh, str(n), "0", "1", scan], check=True)
+        return scan
+    scans = []
+    for n in (1000, 3000):
+        scans.append(("sparse, %d points" % n, sample(n, "sparse%d" % n), []))
+    scan = sample(args.defect_points, "outliers")
+    points = read_xyz(scan)
+    lo = [min(p[a] for p in points) for a in range(3)]
+    hi = [max(p[a] for p in points) for a in range(3)]
+    rng = random.Random(1)
+    points += [tuple(lo[a] - 0.05 * (hi[a] - lo[a]) + 1.1 * (hi[a] - lo[a]) * rng.random() for a in range(3))
+               for _ in range(len(points) // 20)]
+    write_xyz(scan, points)
+    scans.append(("5 % outliers", scan, []))
+    defect = DEFECTS[part]
+    scan = sample(args.defect_points, "hole")
+    points = read_xyz(scan)
+    radius = 0.03 * math.dist(lo, hi)
+    write_xyz(scan, [p for p in points if math.dist(p, defect["crease_point"]) > radius])
+    scans.append(("hole across a crease", scan, []))
+    scan = sample(2 * args.defect_points, "open")
+    write_xyz(scan, [p for p in read_xyz(scan) if p[defect["axis"]] < defect["below"]])
+    scans.append(("open scan", scan, ["--open"]))
+    return scans
+
+
+def print_defects(rows):
+    print("## Meshing scans with defects (mls_mesh defaults, --open for the open scan, against CGAL's Poisson, "
+          "both on all cores, one run)\n")
+    print("| part | case | points | method | s | peak MB | closed | manifold | components | Hausdorff | RMS | "
+          "normal error (deg) | sharp-edge distance | vertices to part: RMS | max | scan to mesh: RMS | note |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        get = lambda k: r.get(k, "-")
+        note = r["message"] if r["message"].startswith("no mesh") else ""
+        number = lambda k: "%.3g" % r[k] if k in r else "-"
+        print("| %s | %s | %d | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["part"], r["case"], r["points"], r["method"], r["seconds"], r["memory"] / 1024., get("closed"),
+            get("manifold"), get("components"), get("hausdorff"), get("rms"), get("normal_deg"), get("edge_distance"),
+            number("vertex_rms"), number("vertex_max"), number("scan_rms"), note))
+    mls = [r for r in rows if r["method"] == "MLS"]
+    print("\nMLS: a mesh for %d of %d scans (closed and manifold: %d)" % (
+        sum(1 for r in mls if "closed" in r), len(mls),
+        sum(1 for r in mls if r.get("closed") == "1" and r.get("manifold") == "1")))
 
 
 def print_meshing(rows, points):
@@ -240,6 +320,10 @@ def main():
     parser.add_argument("--work", default=None, help="directory of the scans (default: a temporary one)")
     parser.add_argument("--meshing", action="store_true", help="mesh the scans (mls_mesh, poisson_mesh) instead")
     parser.add_argument("--timeout", type=float, default=900, help="seconds after which a mesher is stopped")
+    parser.add_argument("--defects", action="store_true",
+                        help="with --meshing: mesh scans with defects (sparse, outliers, a hole, open) of the first "
+                             "part instead")
+    parser.add_argument("--defect-points", type=int, default=10000, help="points of the outliers and hole scans")
     args = parser.parse_args()
 
     names = ("mls_mesh", "scan_part", "poisson_mesh") if args.meshing else ("mls_project", "scan_part", "pcl_mls")
@@ -250,6 +334,20 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="mls_scans_")
     os.makedirs(work, exist_ok=True)
     log = lambda s: print(s, file=sys.stderr, flush=True)
+
+    if args.defects:
+        part = args.parts.split(",")[0]
+        if part not in DEFECTS:
+            sys.exit("scan_benchmark: no defects defined for %s (DEFECTS)" % part)
+        mesh = export_part(part, work)
+        rows = []
+        for case, scan, options in defect_scans(tools, mesh, part, work, args):
+            log("%s, %s" % (part, case))
+            for row in measure_meshing(tools, mesh, scan, args, log, options):
+                row.update(part=part, case=case, points=len(read_xyz(scan)))
+                rows.append(row)
+        print_defects(rows)
+        return
 
     rows = []
     for part in args.parts.split(","):
