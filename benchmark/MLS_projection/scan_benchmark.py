@@ -164,11 +164,12 @@ def scaled_scan(tools, mesh, work, part, noise, args, log):
     return scan, scaled
 
 
-def measure_meshing(tools, mesh, scan, args, log, mls_options=()):
+def measure_meshing(tools, mesh, scan, args, log, mls_options=(), scan_distances=False):
     """mls_mesh with its defaults (and `mls_options`) and poisson_mesh on `scan`, both on all cores;
-    their time, peak memory and `scan_part mesh` figures against the part `mesh`. mls_mesh again
-    with one thread: its speed-up on all cores and whether the two meshes are the same, byte for
-    byte."""
+    their time, peak memory and `scan_part mesh` figures against the part `mesh` (and, with
+    `scan_distances`, the vertices' distances to the part and the scan's to the mesh). mls_mesh
+    again with one thread: its speed-up on all cores and whether the two meshes are the same, byte
+    for byte."""
     d = os.path.dirname(scan)
     rows = []
     cases = {
@@ -189,7 +190,7 @@ def measure_meshing(tools, mesh, scan, args, log, mls_options=()):
             row["message"] = "no mesh: " + re.sub(r"^.*failed: ", "", message)
         fields = output_of([tools["scan_part"], "mesh", mesh, out]).split() if os.path.exists(out) else ["none"]
         row.update(dict(zip(fields[0::2], fields[1::2])))
-        if os.path.exists(out):  # the mesh's vertices to the part, the scan to the mesh (what an open scan allows)
+        if scan_distances and os.path.exists(out):
             row["vertex_rms"], row["vertex_max"] = distances(tools, mesh, out)
             row["scan_rms"], _ = distances(tools, out, scan)
         log("    %-8s %.1f s %s" % (name, seconds, " ".join(fields)))
@@ -343,7 +344,7 @@ def main():
         rows = []
         for case, scan, options in defect_scans(tools, mesh, part, work, args):
             log("%s, %s" % (part, case))
-            for row in measure_meshing(tools, mesh, scan, args, log, options):
+            for row in measure_meshing(tools, mesh, scan, args, log, options, scan_distances=True):
                 row.update(part=part, case=case, points=len(read_xyz(scan)))
                 rows.append(row)
         print_defects(rows)
