@@ -91,7 +91,7 @@ double torus_distance(const Point& q) {
 double sphere_distance(const Point& q) { return std::sqrt(CGAL::to_double(q.x() * q.x() + q.y() * q.y() + q.z() * q.z())) - 1.; }
 
 struct Mesh_check {
-  bool closed = false, valid = false, self_intersecting = true;
+  bool closed = false, valid = false, self_intersecting = true, garbage = true;
   std::size_t vertices = 0, faces = 0, distinct_positions = 0;
   long euler = 0;
   double max_error = std::numeric_limits<double>::infinity();
@@ -102,6 +102,7 @@ Mesh_check check_mesh(const Mesh& m, const Distance& distance) {
   Mesh_check c;
   c.vertices = num_vertices(m);
   c.faces = num_faces(m);
+  c.garbage = m.has_garbage(); // removed elements still counted by num_vertices() and num_faces()
   c.valid = CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m);
   c.closed = CGAL::is_closed(m);
   c.self_intersecting = c.faces == 0 || PMP::does_self_intersect(m);
@@ -130,6 +131,7 @@ void print(const char* name, const Mesh_check& c, double seconds, double h) {
 void check_closed_mesh(const Mesh_check& c, long euler, double bound) {
   MLS_CHECK(c.faces > 100);
   MLS_CHECK(c.valid);
+  MLS_CHECK(!c.garbage);
   MLS_CHECK(c.closed);
   MLS_CHECK(!c.self_intersecting);
   MLS_CHECK_MSG(c.distinct_positions == c.vertices, "non-manifold vertices (duplicated positions)");

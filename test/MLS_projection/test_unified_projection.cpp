@@ -709,6 +709,37 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
   }
 }
 
+// An isolated point above a sampled plane: the fan can pass through it, with the weights centred
+// on it and the plane's points too far to count (an exact fit of one point). Such a fit counts
+// fewer than 2 effective points and is rejected: P_U(wedge) fails there (2 h above the plane and
+// more), and the mixed space lands on the plane (1.75 and 2 times its fan's bandwidth above it).
+// Without the check, both projected the point onto itself.
+MLS_TEST(isolated_point_not_projected_onto_itself) {
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Epick::Point_3> plane;
+  for(int i = 0; i < 1600; ++i) plane.emplace_back(u(gen), u(gen), 0.);
+  const MLS::Mixed_projection<Epick, 3> on_plane(plane);
+  const double h = on_plane.bandwidth(), hs = on_plane.sharp_bandwidth();
+  const auto with = [&plane](const Epick::Point_3& p) {
+    std::vector<Epick::Point_3> pts = plane;
+    pts.push_back(p);
+    return pts;
+  };
+  for(double t : {2., 2.25}) {
+    const Epick::Point_3 above(0.5, 0.5, t * h);
+    const auto res = MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>>(with(above)).project(above);
+    std::cout << "  isolated point " << t << " h above a plane: P_U(wedge) " << MLS::to_string(res.status) << std::endl;
+    MLS_CHECK(res.status == MLS::Projection_status::TOO_FEW_NEIGHBORS);
+  }
+  for(double t : {1.75, 2.}) {
+    const Epick::Point_3 above(0.5, 0.5, t * hs);
+    const auto res = MLS::Mixed_projection<Epick, 3>(with(above)).project(above);
+    std::cout << "  isolated point " << t << " h_s above a plane: mixed at z = " << res.point.z() / h << " h" << std::endl;
+    MLS_CHECK(res.is_success() && std::abs(res.point.z()) <= 0.1 * h);
+  }
+}
+
 // The noise estimate of the mixed space's screening (internal::estimate_noise_variance()): it
 // measures the noise of a noisy plane, and 0 on a coarse noiseless cube (11 by 11 samples per
 // face, where most neighbourhoods of P_L's support straddle an edge), so that the threshold stays

@@ -336,6 +336,10 @@ protected:
       if(warm) warm->reset();
       return fallback(query, iterations);
     }
+    if(!has_effective_points(best, unit)) {
+      if(warm) warm->reset();
+      return this->failure(query, Projection_status::TOO_FEW_NEIGHBORS);
+    }
     Result res = make_result(rs, best, unit, nbh, iterations);
     if(warm) {
       warm->fit_ = best;
@@ -982,6 +986,18 @@ protected:
     fit.valid = std::isfinite(fit.value) && std::isfinite(fit.energy) && fit.C.allFinite() &&
                 (fit.C - r).norm() <= bound * (1 + 1e-9) && fit.value < 1e5;
     return fit;
+  }
+
+  // Whether the weights of the points `unit` (units of h), centred on the fit's C(r), count as
+  // enough points (see `minimum_effective_points()`).
+  bool has_effective_points(const Fit& fit, const Neighborhood<D>& unit) const {
+    double sum = 0, sum_of_squares = 0;
+    for(const V& p : unit.points) {
+      const double w = unit_weight_((p - fit.C).squaredNorm());
+      sum += w;
+      sum_of_squares += w * w;
+    }
+    return this->enough_effective_points(sum, sum_of_squares);
   }
 
   // `r`, `fit` and `unit` in units of h; `nbh` is `unit` in local coordinates.

@@ -176,14 +176,16 @@ public:
     normal.normalize();
     const Vec point = q + f0 * n;
 
-    double W = 0, E = 0;
+    double W = 0, W2 = 0, E = 0;
     for(std::size_t i = 0; i < local.size(); ++i) {
       const double e = local[i][D - 1] - space_.height(c, Domain_point(local[i].template head<D - 1>()));
       W += w[i];
+      W2 += w[i] * w[i];
       E += w[i] * e * e;
     }
     if(!point.allFinite() || !normal.allFinite())
       return this->failure(query, Projection_status::DEGENERATE_NEIGHBORHOOD);
+    if(!this->enough_effective_points(W, W2)) return this->failure(query, Projection_status::TOO_FEW_NEIGHBORS);
 
     Result res;
     this->set_geometry(res, point, normal, q, n, tangents);

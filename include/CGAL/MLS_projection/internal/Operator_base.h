@@ -56,7 +56,18 @@ public:
   const Samples& samples() const { return *samples_; }
   const std::shared_ptr<const Samples>& shared_samples() const { return samples_; }
 
+  /// The fewest independent points the weights of a fit may count, \f$(\sum w_i)^2 / \sum w_i^2\f$:
+  /// 2. Weights that sit on one point (an outlier that the fit passes through, projected onto
+  /// itself) describe no surface; the projection then fails with `TOO_FEW_NEIGHBORS`.
+  static constexpr double minimum_effective_points() { return 2; }
+
 protected:
+  /// Whether weights summing to `sum`, with squares summing to `sum_of_squares`, count as at
+  /// least `minimum_effective_points()` points.
+  static bool enough_effective_points(double sum, double sum_of_squares) {
+    return sum * sum >= minimum_effective_points() * sum_of_squares && sum_of_squares > 0;
+  }
+
   // Energies are in squared length units: h^2 times a few support radii must not overflow.
   bool has_bandwidth() const { return h_ > 0 && h_ < 1e150; }
   /// Radius gathered around a frame origin: the weight's support plus a margin of h/2,

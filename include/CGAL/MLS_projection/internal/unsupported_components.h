@@ -16,6 +16,15 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
+// Meshes that keep removed elements until a garbage collection (Surface_mesh) are collected, so
+// that the caller's num_vertices() and num_faces() count the elements kept only.
+template <class PolygonMesh>
+auto collect_garbage_if_any(PolygonMesh& mesh, int) -> decltype(collect_garbage(mesh), void()) {
+  collect_garbage(mesh);
+}
+template <class PolygonMesh>
+void collect_garbage_if_any(PolygonMesh&, long) {}
+
 /// Removes from `mesh` the connected components that do not pass through the data: those whose
 /// median vertex distance to the data (`distance_to_data`, a function of a vertex's point) exceeds
 /// `max_median`. The MLS surface is defined near its samples only; a closed component away from
@@ -50,7 +59,10 @@ std::size_t remove_unsupported_components(PolygonMesh& mesh, const DistanceToDat
   std::vector<std::size_t> removed;
   for(std::size_t c = 0; c < n; ++c)
     if(c != nearest && !(median[c] <= max_median)) removed.push_back(c);
-  if(!removed.empty()) PMP::remove_connected_components(mesh, removed, component);
+  if(!removed.empty()) {
+    PMP::remove_connected_components(mesh, removed, component);
+    collect_garbage_if_any(mesh, 0);
+  }
   return removed.size();
 }
 
