@@ -116,7 +116,7 @@ mls_tools::Argument_parser make_parser(Settings& s) {
   parser.add("--features", "auto|off", "protect sharp features (default: auto, see below)", [&s](const std::string& v) {
     s.features = mls_tools::parse_choice<bool>("--features", v, {{"auto", true}, {"off", false}});
   });
-  parser.add("--outliers", "remove|keep", "remove the isolated points first (default: remove, see below)",
+  parser.add("--outliers", "remove|keep", "remove the outliers first (default: remove, see below)",
              [&s](const std::string& v) {
                s.remove_outliers = mls_tools::parse_choice<bool>("--outliers", v, {{"remove", true}, {"keep", false}});
              });
@@ -176,7 +176,8 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "Outliers (--outliers remove): a point whose 6 nearest neighbours are more than 3 times as far\n"
        "as theirs are (root mean square, median of the 6), or more than 4 times the median over all\n"
        "points, is removed before anything else; so is a region sampled more than 4 times as sparsely\n"
-       "as the median.\n"
+       "as the median, and a point off the plane of its 20 nearest neighbours by more than that median\n"
+       "and 3 times the 90th percentile of their distances to the plane.\n"
        "\n"
        "Open scans (--open): the input is a part of a surface (scanned from one side, or with its\n"
        "border in view): the surface is meshed where there is data only, up to 2 average spacings\n"

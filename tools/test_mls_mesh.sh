@@ -90,7 +90,7 @@ check_mesh() {
   summary=$(tail -n 1 "$TMP/stderr")
   if [ "$RC" -ne 0 ]; then fail "$name" "exit code $RC (stderr: $ERR)"; return 1; fi
   case "$summary" in
-    "mls_mesh: "*" points, "*" s, "*" vertices, "*" facets, "*" feature polylines, "*" corners, closed, manifold, output "*) ;;
+    "mls_mesh: "*" points"*", "*" s, "*" vertices, "*" facets, "*" feature polylines, "*" corners, closed, manifold, output "*) ;;
     *) fail "$name" "summary line is not of a closed, manifold mesh: $summary"; return 1 ;;
   esac
   [ -s "$file" ] || { fail "$name" "no output $file"; return 1; }

@@ -163,10 +163,13 @@ struct Meshing_options {
   /// the threads: it differs from run to run and with the number of threads. Without it, the
   /// output is bit-identical for any number of threads and across runs.
   bool parallel_mesher = false;
-  /// Remove the isolated points first: those whose 6 nearest neighbours lie at a root-mean-square
-  /// distance more than 3 times the median of that distance over the 6 neighbours, or 4 times its
-  /// median over all points (outliers off the surface; also a region sampled more than 4 times as
-  /// sparsely as the median). Default `true`; see `Meshing_report::outliers`.
+  /// Remove the outliers first: the isolated points, whose 6 nearest neighbours lie at a
+  /// root-mean-square distance more than 3 times the median of that distance over the 6 neighbours,
+  /// or 4 times its median over all points (also a region sampled more than 4 times as sparsely
+  /// as the median); and the points off their local surface, further from the plane of their 20
+  /// nearest neighbours than that median and than 3 times the 90th percentile of the neighbours'
+  /// distances to it.
+  /// Default `true`; see `Meshing_report::outliers`.
   bool remove_outliers = true;
   /// Protect sharp-feature polylines (Mesh_3 with a space that finds creases: `WEDGE`, `MIXED`).
   bool features = true;

@@ -18,7 +18,7 @@
 #include <CGAL/MLS_projection/detect_sharp_features.h>
 #include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
-#include <CGAL/MLS_projection/internal/isolated_points.h>
+#include <CGAL/MLS_projection/internal/outlier_points.h>
 #include <CGAL/MLS_projection/internal/mesh_attributes.h>
 #include <CGAL/MLS_projection/internal/mesher_calls.h>
 #include <CGAL/MLS_projection/internal/open_surface.h>
@@ -286,10 +286,10 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     for(std::size_t i = 0; i < items.size(); ++i)
       coordinates[i] = internal::Vec<3>(CGAL::to_double(items[i].first.x()), CGAL::to_double(items[i].first.y()),
                                         CGAL::to_double(items[i].first.z()));
-    const std::vector<bool> isolated = internal::isolated_points<ConcurrencyTag>(coordinates);
+    const std::vector<bool> outlier = internal::outlier_points<ConcurrencyTag>(coordinates);
     std::size_t kept = 0;
     for(std::size_t i = 0; i < items.size(); ++i) {
-      if(isolated[i]) continue;
+      if(outlier[i]) continue;
       items[kept] = items[i];
       std::copy_n(attributes.begin() + i * channels, channels, attributes.begin() + kept * channels);
       ++kept;
