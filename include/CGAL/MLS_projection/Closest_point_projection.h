@@ -336,11 +336,12 @@ protected:
       if(warm) warm->reset();
       return fallback(query, iterations);
     }
-    if(!has_effective_points(best, unit)) {
+    const std::vector<double> w = weights_at(best, unit);
+    if(!has_effective_points(w)) {
       if(warm) warm->reset();
       return this->failure(query, Projection_status::TOO_FEW_NEIGHBORS);
     }
-    Result res = make_result(rs, best, unit, nbh, iterations);
+    Result res = make_result(rs, best, unit, w, nbh, iterations);
     if(warm) {
       warm->fit_ = best;
       warm->valid_ = res.status == Projection_status::CONVERGED;
@@ -988,21 +989,27 @@ protected:
     return fit;
   }
 
-  // Whether the weights of the points `unit` (units of h), centred on the fit's C(r), count as
-  // enough points (see `minimum_effective_points()`).
-  bool has_effective_points(const Fit& fit, const Neighborhood<D>& unit) const {
+  // The weights of the points `unit` (units of h), centred on the fit's C(r).
+  std::vector<double> weights_at(const Fit& fit, const Neighborhood<D>& unit) const {
+    std::vector<double> w(unit.size());
+    for(std::size_t i = 0; i < unit.size(); ++i) w[i] = unit_weight_((unit.points[i] - fit.C).squaredNorm());
+    return w;
+  }
+
+  // Whether the weights `w` count as enough points (see `minimum_effective_points()`).
+  bool has_effective_points(const std::vector<double>& w) const {
     double sum = 0, sum_of_squares = 0;
-    for(const V& p : unit.points) {
-      const double w = unit_weight_((p - fit.C).squaredNorm());
-      sum += w;
-      sum_of_squares += w * w;
+    for(const double wi : w) {
+      sum += wi;
+      sum_of_squares += wi * wi;
     }
     return this->enough_effective_points(sum, sum_of_squares);
   }
 
-  // `r`, `fit` and `unit` in units of h; `nbh` is `unit` in local coordinates.
-  Result make_result(const V& r, const Fit& fit, const Neighborhood<D>& unit, const Neighborhood<D>& nbh,
-                     int iterations) const {
+  // `r`, `fit` and `unit` in units of h, `w` the weights of `unit` at C(r); `nbh` is `unit` in
+  // local coordinates.
+  Result make_result(const V& r, const Fit& fit, const Neighborhood<D>& unit, const std::vector<double>& w,
+                     const Neighborhood<D>& nbh, int iterations) const {
     const double h = this->h_;
     const Closest_point<D>& cp = fit.at_r;
     V point = fit.C;
@@ -1030,8 +1037,6 @@ protected:
       // A singular C(r) is a feature of the data only if no single hyperplane explains the
       // weighted points as well as the fit: a fan can also have an apex or a crease on a flat
       // region (coplanar faces but one, which no point supports).
-      std::vector<double> w(unit.size());
-      for(std::size_t i = 0; i < unit.size(); ++i) w[i] = unit_weight_((unit.points[i] - fit.C).squaredNorm());
       const auto pca = internal::weighted_pca<D>(unit.points, w);
       const bool is_feature = pca.valid && pca.eigenvalues[0] > 4. * fit.energy + 1e-14;
       res.is_on_feature = cp.is_singular && is_feature;
