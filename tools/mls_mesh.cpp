@@ -408,14 +408,15 @@ int run(int argc, char** argv) {
                                        : "not closed";
   const std::string outliers =
     report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)";
+  const std::string gaps = report.gap_seeds == 0 ? std::string() : ", " + std::to_string(report.gap_seeds) + " in gaps";
   std::fprintf(stderr,
-               "%s: %zu points%s, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator, features "
+               "%s: %zu points%s, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator%s, features "
                "%.1f s: %zu queries, meshing %.1f s), %zu vertices, %zu facets, %zu feature polylines, %zu corners%s%s, %s, %s, "
                "output %s%s\n",
                tool_name, input.size(),
                outliers.c_str(), name_of(s.op, operator_choices).c_str(),
                name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
-               report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds,
+               report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds, gaps.c_str(),
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
                report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", removed.c_str(), closure.c_str(), manifold ? "manifold" : "not manifold", s.output.c_str(), written.c_str());
   return 0;

@@ -210,6 +210,17 @@ struct Seed_projection<Projection, false> {
 /// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
 /// screened operator (`internal::Levin_screened_projection`), also used for the feature detection.
 ///
+/// <b>Gaps.</b> With `complete_gaps` (default), the holes of the sampling get seeds too, as the
+/// paper completes a gap by projection (its Figure 8): a blended seed whose neighbours within
+/// \f$h\f$, seen in its tangent plane, leave more than \f$150^\circ\f$ free (the rim of a hole)
+/// sends a query \f$h\f$ into the middle of that angle; its projection by the seed projection
+/// becomes a seed (blended, and among `projected_seeds()`) when its energy is at most the bound of
+/// a P_L fit blended in place of the operator's (a fan may converge to a wrong crease where the
+/// data are sparse), its fit passes the test above, and it lies at least \f$h/2\f$ from every
+/// seed and between \f$h\f$ and \f$2h\f$ from the samples; up to 6 rounds go on from the new
+/// seeds. In a hole 2 to 4\f$h\f$ across, the surface is then made by fits that see both of its
+/// sides, and a crease across it continues, instead of the far value.
+///
 /// <b>Evaluation, `LOCAL_FITS` (default).</b> With \f$s_1, \dots, s_{k+1}\f$ the \f$k+1\f$ nearest
 /// seeds of \f$x\f$ (\f$k\f$ = `blend_neighbors`) and \f$R\f$ the distance to the last,
 /// \f[ f_{\mathrm{fit}}(x) = \frac{\sum_{i \le k} \phi(|x - s_i|/R)\, d_i(x)}{\sum_{i \le k} \phi(|x - s_i|/R)}, \f]
@@ -245,6 +256,19 @@ class MLS_implicit_function {
   static_assert(Projection::dimension == 3, "MLS_implicit_function: a 3D projection operator");
   using Evaluator = internal::Local_fit_evaluator<Projection>;
   static constexpr bool screens = internal::Seed_projection<Projection>::screens;
+  // Gap completion (see complete_gaps()): the free angle that makes a seed a rim seed (the
+  // neighbours of a seed inside a random sampling leave less than half a turn free); the step
+  // into the gap (units of h, as the next four); the least distance from a gap seed to the other
+  // seeds (their spacing); its least distance to the samples: a gap, not one of the empty discs
+  // of a random sampling (of which 2% of the surface lies further than h = 2.2 spacings from every
+  // sample); its largest distance to the samples (gaps up to 4h across, the support of the
+  // projection, whose fits see both sides); the rounds.
+  static constexpr double gap_angle = 150.;
+  static constexpr double gap_step = 1.;
+  static constexpr double gap_apart = 0.5;
+  static constexpr double gap_empty = 1.;
+  static constexpr double gap_reach = 2.;
+  static constexpr int gap_rounds = 6;
   using V = internal::Vec<3>;
   using M = internal::Mat<3>;
 
@@ -407,6 +431,9 @@ public:
   /// The number of seeds blended with P_L's fit in place of the operator's, which failed or
   /// disagreed with the sample normals (see "Seeds"); counted in `number_of_seeds()`.
   std::size_t number_of_levin_fallbacks() const { return data_->levin_fallbacks; }
+  /// The number of seeds projected into the gaps of the sampling (see "Gaps"); counted in
+  /// `number_of_seeds()`.
+  std::size_t number_of_gap_seeds() const { return data_->gap_seeds; }
   /// What the estimation of oriented normals did (all zero when the samples carry normals).
   const internal::Oriented_normals_report& normals_report() const { return data_->normals_report; }
 
@@ -437,6 +464,7 @@ private:
     std::size_t failed = 0;
     std::size_t unblended = 0;
     std::size_t levin_fallbacks = 0;
+    std::size_t gap_seeds = 0;
     std::optional<Seed_projection_type> seed_projection;
     std::size_t operator_seeds = 0;
     double threshold = -1;
@@ -523,6 +551,43 @@ private:
       value += v * ((c & 1) ? t[0] : 1 - t[0]) * (((c >> 1) & 1) ? t[1] : 1 - t[1]) * (((c >> 2) & 1) ? t[2] : 1 - t[2]);
     }
     return value;
+  }
+
+  // The oriented fit of a seed's result `r`, with its projected point `P` and oriented normal `rn`
+  // (sample-local); false when the result or its fit is unusable.
+  static bool make_fit(const Data& d, const Result& r, Fit& f, V& P, V& rn) {
+    using KT = internal::Kernel_types<Geom_traits, 3>;
+    const Samples& samples = d.projection.samples();
+    f.count = int(r.coefficients.size());
+    // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
+    if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters)
+      return false;
+    P = samples.to_local(r.point);
+    f.axes.col(0) = KT::to_eigen(r.frame.tangents[0]);
+    f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
+    f.axes.col(2) = KT::to_eigen(r.frame.normal);
+    f.origin = samples.to_local(r.frame.origin);
+    f.unit = is_levin_fit(f.count) ? 1. : d.evaluator.unit(d.h);
+    std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
+    // the "up" normal of the fit at the projected point, and its orientation
+    Closest_point<3> cp;
+    if(f.count == 0) {
+      cp.normal = V(0, 0, 1);
+      cp.signed_distance = f.axes.col(2).dot(P - f.origin) / f.unit;
+    } else {
+      cp = fit_closest_point(d, f, V(f.axes.transpose() * (P - f.origin) / f.unit));
+    }
+    const V up = f.axes * cp.normal;
+    rn = KT::to_eigen(r.normal);
+    double vote = orientation_vote(d, P, up);
+    if(vote == 0) vote = up.dot(rn) < 0 ? -1. : 1.; // no sample normal decides: the operator's
+    f.sign = vote;
+    if(rn.dot(up) * vote < 0) rn = -rn;
+    f.point = P; // converted to seed-local coordinates by the caller
+    f.normal = rn;
+    // the fit must pass through its own projection
+    return P.allFinite() && f.origin.allFinite() && f.axes.allFinite() && up.allFinite() && rn.allFinite() &&
+           std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h;
   }
 
   // Whether the oriented fit `f` (sample-local coordinates) agrees with the oriented normals of
@@ -638,40 +703,6 @@ private:
     // 4. the local fits, oriented
     std::vector<Point_3> seed_points;
     std::vector<Fit> fits;
-    // The oriented fit of a result, with its projected point P and oriented normal (sample-local);
-    // false when the result or its fit is unusable.
-    const auto make_fit = [&](const Result& r, Fit& f, V& P, V& rn) {
-      f.count = int(r.coefficients.size());
-      // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
-      if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters)
-        return false;
-      P = samples.to_local(r.point);
-      f.axes.col(0) = KT::to_eigen(r.frame.tangents[0]);
-      f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
-      f.axes.col(2) = KT::to_eigen(r.frame.normal);
-      f.origin = samples.to_local(r.frame.origin);
-      f.unit = is_levin_fit(f.count) ? 1. : d.evaluator.unit(d.h);
-      std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
-      // the "up" normal of the fit at the projected point, and its orientation
-      Closest_point<3> cp;
-      if(f.count == 0) {
-        cp.normal = V(0, 0, 1);
-        cp.signed_distance = f.axes.col(2).dot(P - f.origin) / f.unit;
-      } else {
-        cp = fit_closest_point(d, f, V(f.axes.transpose() * (P - f.origin) / f.unit));
-      }
-      const V up = f.axes * cp.normal;
-      rn = KT::to_eigen(r.normal);
-      double vote = orientation_vote(d, P, up);
-      if(vote == 0) vote = up.dot(rn) < 0 ? -1. : 1.; // no sample normal decides: the operator's
-      f.sign = vote;
-      if(rn.dot(up) * vote < 0) rn = -rn;
-      f.point = P; // converted to seed-local coordinates below
-      f.normal = rn;
-      // the fit must pass through its own projection
-      return P.allFinite() && f.origin.allFinite() && f.axes.allFinite() && up.allFinite() && rn.allFinite() &&
-             std::abs(cp.signed_distance) * f.unit <= 0.1 * d.h;
-    };
     // The fit each seed blends: the operator's, else P_L's in its place (if it agrees), else none.
     // Tested in parallel, kept in seed order.
     enum Kept : std::uint8_t { NONE, OPERATOR, LEVIN };
@@ -681,7 +712,7 @@ private:
       Result& r = results[j];
       Fit& f = seed_fits[j];
       V P, rn;
-      usable[j] = make_fit(r, f, P, rn);
+      usable[j] = make_fit(d, r, f, P, rn);
       if(usable[j]) r.normal = KT::to_vector(rn);
       if(usable[j] && agrees_with_normals(d, f, P, rn)) {
         kept[j] = OPERATOR;
@@ -689,7 +720,7 @@ private:
       }
       V Pg, ng;
       if(j < levin_results.size() && levin_results[j].is_success() && levin_results[j].energy <= d.fallback_threshold &&
-         make_fit(levin_results[j], f, Pg, ng) && agrees_with_normals(d, f, Pg, ng))
+         make_fit(d, levin_results[j], f, Pg, ng) && agrees_with_normals(d, f, Pg, ng))
         kept[j] = LEVIN;
     });
     std::size_t m = 0; // the kept fits, moved to the front in place
@@ -706,6 +737,7 @@ private:
     }
     seed_fits.resize(m);
     fits = std::move(seed_fits);
+    if(d.options.complete_gaps) complete_gaps(d, ConcurrencyTag(), seed_points, fits);
     if(fits.size() < 2) {
       d.status = Status::TOO_FEW_SEEDS;
       return;
@@ -746,6 +778,81 @@ private:
       }
     }
     if(callback && !callback(1.)) d.status = Status::CANCELLED;
+  }
+
+  // Gap completion: seeds projected into the gaps of the sampling (the holes of a scan), so that
+  // local fits, not the far value, make the surface there and a crease crossing a gap goes on
+  // across it (the paper's Figure 8). A seed whose neighbours within h, seen in its tangent plane,
+  // leave an angle of more than `gap_angle` free (the rim of a gap) sends a query `gap_step` h
+  // into the middle of that angle. Its projection becomes a seed, as a seed of the samples would,
+  // if its fit explains its data within the noise and agrees with the normals, and it lies at
+  // least `gap_apart` h from every seed, between `gap_empty` h and `gap_reach` h from the
+  // samples; rounds go on from the new seeds.
+  template <class ConcurrencyTag>
+  static void complete_gaps(Data& d, ConcurrencyTag, std::vector<Point_3>& seed_points, std::vector<Fit>& fits) {
+    using KT = internal::Kernel_types<Geom_traits, 3>;
+    const Samples& samples = d.projection.samples();
+    const double h = d.h, apart2 = gap_apart * gap_apart * h * h;
+    // a gap seed's fit must explain its data within the noise (a fan may converge to a wrong
+    // crease where the data are sparse): the bound of a P_L fit blended in place of a seed's
+    const double max_energy = d.fallback_threshold >= 0 ? d.fallback_threshold : std::numeric_limits<double>::infinity();
+    std::vector<V> points; // the seeds' projected points (sample-local)
+    for(const Fit& f : fits) points.push_back(f.point);
+    std::vector<std::pair<double, std::size_t>> near;
+    std::vector<double> angles;
+    const auto far_from = [&](const internal::Point_tree<3>& tree, const V& x, std::size_t from) {
+      tree.k_nearest(x, 1, near);
+      if(!near.empty() && near[0].first < apart2) return false;
+      for(std::size_t j = from; j < points.size(); ++j) // this round's, not in the tree
+        if((points[j] - x).squaredNorm() < apart2) return false;
+      return true;
+    };
+    for(std::size_t begin = 0, round = 0; round < gap_rounds && begin < points.size(); ++round) {
+      const internal::Point_tree<3> tree(points);
+      const std::size_t end = points.size();
+      std::vector<Point_3> queries;
+      for(std::size_t i = begin; i < end; ++i) {
+        const V& P = points[i];
+        const V& n = fits[i].normal;
+        const V t0 = (std::abs(n[0]) < 0.9 ? V(1, 0, 0) : V(0, 1, 0)).cross(n).normalized(), t1 = n.cross(t0);
+        angles.clear();
+        tree.for_each_in_ball(P, h, [&](std::size_t j, const V& q) {
+          if(j != i) angles.push_back(std::atan2((q - P).dot(t1), (q - P).dot(t0)));
+        });
+        if(angles.size() < 3) continue;
+        std::sort(angles.begin(), angles.end());
+        double gap = angles.front() + 2 * CGAL_PI - angles.back(), middle = angles.back() + 0.5 * gap;
+        for(std::size_t k = 1; k < angles.size(); ++k)
+          if(angles[k] - angles[k - 1] > gap) {
+            gap = angles[k] - angles[k - 1];
+            middle = angles[k - 1] + 0.5 * gap;
+          }
+        const V q = P + gap_step * h * (std::cos(middle) * t0 + std::sin(middle) * t1);
+        if(gap > gap_angle * CGAL_PI / 180. && far_from(tree, q, end) &&
+           samples.kth_neighbor_distance(q, 1) >= gap_empty * h) {
+          points.push_back(q); // held back from the tree until the next round, to thin the queries
+          queries.push_back(samples.to_world(q));
+        }
+      }
+      points.resize(end);
+      if(queries.empty()) break;
+      std::vector<Result> results;
+      project_points<ConcurrencyTag>(*d.seed_projection, queries, std::back_inserter(results));
+      for(Result& r : results) {
+        Fit f;
+        V P, rn;
+        if(!(r.energy <= max_energy) || !make_fit(d, r, f, P, rn) || !far_from(tree, P, end)) continue;
+        const double to_samples = samples.kth_neighbor_distance(P, 1);
+        if(to_samples < gap_empty * h || to_samples > gap_reach * h || !agrees_with_normals(d, f, P, rn)) continue;
+        r.normal = KT::to_vector(rn);
+        d.projected.push_back(r);
+        seed_points.push_back(r.point);
+        fits.push_back(f);
+        points.push_back(P);
+        ++d.gap_seeds;
+      }
+      begin = end;
+    }
   }
 
   // Projects `queries` with the seed projection (built here: its screening threshold comes from

@@ -63,6 +63,11 @@ struct Implicit_function_options {
   /// The number of neighbours of the normal estimation and orientation (when the samples carry
   /// no normals): `pca_estimate_normals` and the orientation's neighbour graph.
   int normal_neighbors = 18;
+  /// Project seeds into the gaps of the sampling (holes of a scan up to about \f$4h\f$ across),
+  /// so that the local fits make the surface there (see `MLS_implicit_function`, "Gaps").
+  /// `mls_surface_reconstruction()` turns it off for an open surface, which ends where its
+  /// samples end.
+  bool complete_gaps = true;
 };
 
 /// \ingroup PkgMLSProjectionRef
@@ -83,9 +88,10 @@ struct Meshing_report {
   std::size_t normals_by_fallback = 0;
   /// Seeds whose local fits are blended, seeds projected but not blended (see
   /// `MLS_implicit_function::number_of_unblended_seeds()`), failed seeds, and the blended seeds
-  /// whose fit is P_L's in place of the operator's (`number_of_levin_fallbacks()`).
+  /// whose fit is P_L's in place of the operator's (`number_of_levin_fallbacks()`), and the
+  /// blended seeds projected into the gaps of the sampling (`number_of_gap_seeds()`).
   /// @{
-  std::size_t seeds = 0, unblended_seeds = 0, failed_seeds = 0, levin_fallback_seeds = 0;
+  std::size_t seeds = 0, unblended_seeds = 0, failed_seeds = 0, levin_fallback_seeds = 0, gap_seeds = 0;
   /// @}
   /// Seeds projected by the closest-point operator (the others by P_L, see
   /// `Implicit_function_options::levin_screening`).

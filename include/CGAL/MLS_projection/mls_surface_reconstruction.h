@@ -348,6 +348,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     // In an open scan's slab, f is the blend of the local fits (continuous), not the far value,
     // whose sign comes from votes that change abruptly beyond the scan's border.
     Implicit_function_options function_options = options.implicit_function;
+    if(options.open_surface) function_options.complete_gaps = false;
     if(options.open_surface && projection.bandwidth() > 0) {
       function_options.far_start = (std::max)(function_options.far_start, slab.reach / projection.bandwidth() + 1.);
       function_options.far_end = (std::max)(function_options.far_end, function_options.far_start + 1.);
@@ -360,6 +361,7 @@ bool mls_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
     out.unblended_seeds = function.number_of_unblended_seeds();
     out.failed_seeds = function.number_of_failed_seeds();
     out.levin_fallback_seeds = function.number_of_levin_fallbacks();
+    out.gap_seeds = function.number_of_gap_seeds();
     if(function.status() == Function::Status::CANCELLED) return fail("cancelled");
     if(!function.is_valid()) return fail("no implicit function (too few seeds could be projected: degenerate data)");
     const double h = function.bandwidth();
