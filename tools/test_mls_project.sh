@@ -553,8 +553,8 @@ operators_group() {
   local h2=0.06 h3=0.15
   local combo op space b2 b3 f2 f3
   # operator:space:bound 2D:bound 3D:features 2D:features 3D. Bounds: the largest distance of a
-  # projection to the true shape, in units of h, measured (2026-11-22, library headers of that
-  # morning) and about doubled. The smooth fits cut or round the ridge by ~0.3 h (the plane, and
+  # projection to the true shape, in units of h, measured and about doubled. The smooth fits cut
+  # or round the ridge by ~0.3 h (the plane, and
   # P_E whatever its space: its frame is Levin's, so the fan's apex cannot reach the crease) or
   # less (the quadratics: 0.03-0.17 h). P_U with the wedge fan reproduces the ridge: 1e-15 h in
   # 2D; in 3D one query of 20 lands 5e-5 h off (an optimiser tolerance, not yet understood: the

@@ -4,8 +4,8 @@
 // The interface between the command line of mls_mesh (tools/mls_mesh.cpp) and the translation
 // unit calling CGAL::MLS::mls_surface_reconstruction() (tools/mls_mesh_reconstruct.cpp), which
 // instantiates every operator, function space and mesher. One unit for inputs with and without
-// normals: the two calls share those instantiations (as two units, each compiled all of them:
-// 244 s and 235 s with g++ -O3 on 2 cores, 2026-12-01).
+// normals: the two calls share those instantiations (as two units, each would compile all of
+// them).
 
 #ifndef MLS_TOOLS_MESH_JOB_H
 #define MLS_TOOLS_MESH_JOB_H
