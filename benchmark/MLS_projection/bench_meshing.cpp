@@ -181,7 +181,7 @@ Figures measure(const Mesh& mesh, const mls_tools::Analytic_solid& solid, double
     const Point centroid = CGAL::centroid(a, b, c);
     const mls_tools::Vec3 t = solid.closest_point(to_vec(centroid)).normal;
     const double cosine = std::clamp(n.x() * t[0] + n.y() * t[1] + n.z() * t[2], -1., 1.);
-    angle_sum += area * std::acos(cosine) * 180. / M_PI;
+    angle_sum += area * std::acos(cosine) * 180. / CGAL_PI;
     area_sum += area;
   }
   f.normal_error = area_sum > 0 ? angle_sum / area_sum : 0;
@@ -460,7 +460,7 @@ Mesh uv_sphere(double r, int rings) {
   const auto top = mesh.add_vertex(Point(0, 0, r)), bottom = mesh.add_vertex(Point(0, 0, -r));
   for(int i = 1; i < rings; ++i)
     for(int j = 0; j < sectors; ++j) {
-      const double t = M_PI * i / rings, f = 2 * M_PI * j / sectors;
+      const double t = CGAL_PI * i / rings, f = 2 * CGAL_PI * j / sectors;
       v.push_back(mesh.add_vertex(Point(r * std::sin(t) * std::cos(f), r * std::sin(t) * std::sin(f), r * std::cos(t))));
     }
   const auto at = [&](int i, int j) { return v[std::size_t((i - 1) * sectors + (j % sectors))]; };
@@ -623,12 +623,12 @@ int main(int argc, char** argv) {
       if(shape == "sphere") {
         const int rings = 40;
         const Figures f = measure(uv_sphere(0.6, rings), *solid, spacing);
-        const double bound = 0.6 * (1 - std::cos(M_PI / rings / std::sqrt(2.)));
+        const double bound = 0.6 * (1 - std::cos(CGAL_PI / rings / std::sqrt(2.)));
         std::fprintf(stderr,
                      "sphere: sanity: inscribed UV sphere (%d bands): vertex max %.2g, Hausdorff %.3g (bound %.3g), "
                      "RMS %.3g, normal error %.3f deg, volume %.4f (exact %.4f)\n",
                      rings, f.vertex_max, f.hausdorff, bound, f.rms, f.normal_error, f.volume,
-                     4. / 3. * M_PI * 0.6 * 0.6 * 0.6);
+                     4. / 3. * CGAL_PI * 0.6 * 0.6 * 0.6);
       }
     }
 

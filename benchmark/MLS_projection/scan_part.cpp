@@ -211,7 +211,7 @@ int mesh_quality(const std::string& part_file, const std::string& mesh_file) {
     if(!(w > 0)) continue;
     const auto closest = part_tree.closest_point_and_primitive(CGAL::centroid(a, b, c));
     const Kernel::Vector_3 n = PMP::compute_face_normal(f, mesh), m = PMP::compute_face_normal(closest.second, part);
-    angle_area += w * std::acos(std::clamp(n * m, -1., 1.)) * 180. / M_PI;
+    angle_area += w * std::acos(std::clamp(n * m, -1., 1.)) * 180. / CGAL_PI;
     area += w;
   }
   double edge_sum = 0;
@@ -220,7 +220,7 @@ int mesh_quality(const std::string& part_file, const std::string& mesh_file) {
     const auto h = part.halfedge(e);
     if(part.is_border(e)) continue;
     const auto n0 = PMP::compute_face_normal(part.face(h), part), n1 = PMP::compute_face_normal(part.face(part.opposite(h)), part);
-    if(n0 * n1 > std::cos(30. * M_PI / 180.)) continue;
+    if(n0 * n1 > std::cos(30. * CGAL_PI / 180.)) continue;
     const Point a = part.point(part.source(h)), b = part.point(part.target(h));
     const int steps = (std::max)(1, int(std::sqrt(CGAL::squared_distance(a, b)) / (0.002 * diag)));
     for(int i = 0; i <= steps; ++i) {

@@ -89,7 +89,7 @@ int main() {
   const double R = 0.3;
   std::vector<Point_2> samples, queries;
   for(int i = 0; i < 200; ++i) {
-    const double t = 2 * M_PI * (i + 0.3 * std::sin(7. * i)) / 200;
+    const double t = 2 * CGAL_PI * (i + 0.3 * std::sin(7. * i)) / 200;
     samples.emplace_back(R * std::cos(t), R * std::sin(t));
   }
   for(int i = 0; i < 50; ++i) {

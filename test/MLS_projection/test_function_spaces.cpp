@@ -280,7 +280,7 @@ void check_quadric(const Quadric& Q, const V3& x, Worst& worst, double tol = 1e-
 
 MLS_TEST(quadratic_3_random_against_brute_force) {
   std::mt19937 g(3);
-  std::uniform_real_distribution<double> u(-2, 2), sgn(-1, 1), ang(-M_PI, M_PI);
+  std::uniform_real_distribution<double> u(-2, 2), sgn(-1, 1), ang(-CGAL_PI, CGAL_PI);
   Worst worst("quadric");
   for(int i = 0; i < 600; ++i) {
     Quadric Q{(sgn(g) < 0 ? -1 : 1) * log_uniform(g, 1e-2, 10.), (sgn(g) < 0 ? -1 : 1) * log_uniform(g, 1e-2, 10.), ang(g)};
@@ -290,7 +290,7 @@ MLS_TEST(quadratic_3_random_against_brute_force) {
 
 MLS_TEST(quadratic_3_degenerate_cases) {
   std::mt19937 g(4);
-  std::uniform_real_distribution<double> u(-2, 2), ang(-M_PI, M_PI), k(-3, 3);
+  std::uniform_real_distribution<double> u(-2, 2), ang(-CGAL_PI, CGAL_PI), k(-3, 3);
   Worst worst("quadric degenerate");
   for(int i = 0; i < 40; ++i) {
     const V3 x(u(g), u(g), u(g));
@@ -331,7 +331,7 @@ MLS_TEST(quadratic_3_degenerate_cases) {
 
 MLS_TEST(quadratic_fit_recovers_member) {
   std::mt19937 g(5);
-  std::uniform_real_distribution<double> u(-1, 1), ang(-M_PI, M_PI);
+  std::uniform_real_distribution<double> u(-1, 1), ang(-CGAL_PI, CGAL_PI);
   MLS::Quadratic_function_space<3> fs3;
   MLS::Quadratic_function_space<2> fs2;
   for(int t = 0; t < 20; ++t) {
@@ -434,12 +434,12 @@ MLS_TEST(wedge_2_plane_and_orientation) {
     MLS_CHECK_NEAR(cp.signed_distance, x[1], 1e-15);
     MLS_CHECK(!cp.is_singular && cp.normal[1] > 1 - 1e-15);
     // swapped and shifted by 2 pi: the same member
-    const auto cq = fs.closest_point(Eigen::Vector2d(M_PI + 2 * M_PI, -2 * M_PI), x);
+    const auto cq = fs.closest_point(Eigen::Vector2d(CGAL_PI + 2 * CGAL_PI, -2 * CGAL_PI), x);
     MLS_CHECK_NEAR((cq.point - cp.point).norm(), 0., 1e-14);
     MLS_CHECK_NEAR(cq.signed_distance, cp.signed_distance, 1e-14);
   }
   // a valley (inside is up) and a ridge (outside is up): the apex normal is +e2
-  for(const Eigen::Vector2d c : {Eigen::Vector2d(M_PI / 4, 3 * M_PI / 4), Eigen::Vector2d(-M_PI / 4, -3 * M_PI / 4)}) {
+  for(const Eigen::Vector2d c : {Eigen::Vector2d(CGAL_PI / 4, 3 * CGAL_PI / 4), Eigen::Vector2d(-CGAL_PI / 4, -3 * CGAL_PI / 4)}) {
     const auto above = fs.closest_point(c, V2(0, 1)), below = fs.closest_point(c, V2(0, -1));
     MLS_CHECK(above.signed_distance > 0 && below.signed_distance < 0);
     const auto& apex = (c[0] > 0) ? below : above;
@@ -488,8 +488,8 @@ template <int N>
 double brute_fan(const Eigen::Matrix<double, 2 * N, 1>& c, const V3& x) {
   std::vector<std::pair<double, V3>> vs;
   for(int i = 0; i < N; ++i) {
-    double lon = std::fmod(c[2 * i + 1], 2 * M_PI);
-    if(lon < 0) lon += 2 * M_PI;
+    double lon = std::fmod(c[2 * i + 1], 2 * CGAL_PI);
+    if(lon < 0) lon += 2 * CGAL_PI;
     vs.emplace_back(lon, V3(std::cos(c[2 * i]) * std::cos(c[2 * i + 1]), std::cos(c[2 * i]) * std::sin(c[2 * i + 1]),
                             std::sin(c[2 * i])));
   }
@@ -640,7 +640,7 @@ MLS_TEST(wedge_fan_3_edge) {
     const double p1 = phi(g), p2 = phi(g);
     const V3 w1(0, std::cos(p1), std::sin(p1)), w2(0, -std::cos(p2), std::sin(p2));
     Eigen::Matrix<double, 8, 1> c;
-    c << 0, 0, p1, M_PI / 2, 0, M_PI, p2, 3 * M_PI / 2;
+    c << 0, 0, p1, CGAL_PI / 2, 0, CGAL_PI, p2, 3 * CGAL_PI / 2;
     for(int j = 0; j < 20; ++j) {
       V3 x(u(g), u(g), u(g));
       if(j % 4 == 0) x[0] *= 1e-3; // near the crease

@@ -35,7 +35,7 @@ template <class K>
 std::vector<typename K::Point_2> circle(int n, double R, double cx = 0, double cy = 0) {
   std::vector<typename K::Point_2> pts;
   for(int i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * i / n;
+    const double t = 2 * CGAL_PI * i / n;
     pts.emplace_back(cx + R * std::cos(t), cy + R * std::sin(t));
   }
   return pts;
@@ -45,7 +45,7 @@ std::vector<typename K::Point_2> circle(int n, double R, double cx = 0, double c
 template <class K>
 std::vector<typename K::Point_3> sphere(int n, double R = 1) {
   std::vector<typename K::Point_3> pts;
-  const double golden = M_PI * (3 - std::sqrt(5.));
+  const double golden = CGAL_PI * (3 - std::sqrt(5.));
   for(int i = 0; i < n; ++i) {
     const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), t = golden * i;
     pts.emplace_back(R * r * std::cos(t), R * r * std::sin(t), R * z);
@@ -80,7 +80,7 @@ std::vector<SC::Point_2> wedge(double phi, double spacing, double L) {
 
 // |cos| of the angle between Levin's phase-1 frame normal at the apex of a wedge and its bisector.
 double apex_frame_alignment(double phi_degrees) {
-  const auto pts = wedge(phi_degrees * M_PI / 180, 0.01, 1.);
+  const auto pts = wedge(phi_degrees * CGAL_PI / 180, 0.01, 1.);
   MLS::Levin_projection<SC, MLS::Plane_function_space<2>> P(pts);
   const auto res = P.project(SC::Point_2(0, 0));
   if(!res.is_success()) return -1;
@@ -98,10 +98,10 @@ MLS_TEST(circle_2d_projects_onto_circle) {
   MLS::Levin_projection<SC, MLS::Polynomial_function_space<2>> Pq(pts);
   MLS::Levin_projection<SC, MLS::Plane_function_space<2>> Pp(pts);
   const double h = Pq.bandwidth();
-  MLS_CHECK_NEAR(h, 3 * 2 * M_PI / 400, 1e-3);
+  MLS_CHECK_NEAR(h, 3 * 2 * CGAL_PI / 400, 1e-3);
   double err_q = 0, err_p = 0;
   for(int i = 0; i < 200; ++i) {
-    const double t = 0.0137 + 2 * M_PI * i / 200, rad = 1 + 0.4 * h * std::sin(7. * i);
+    const double t = 0.0137 + 2 * CGAL_PI * i / 200, rad = 1 + 0.4 * h * std::sin(7. * i);
     const SC::Point_2 r(rad * std::cos(t), rad * std::sin(t));
     const auto a = Pq.project(r), b = Pp.project(r);
     MLS_CHECK(a.status == MLS::Projection_status::CONVERGED);

@@ -65,7 +65,7 @@ std::vector<Point> sphere_points(std::size_t n, double radius = 1.) {
   CGAL::Random rng(7);
   std::vector<Point> p;
   for(std::size_t i = 0; i < n; ++i) {
-    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * CGAL_PI), r = std::sqrt(1 - z * z);
     p.emplace_back(radius * r * std::cos(t), radius * r * std::sin(t), radius * z);
   }
   return p;
@@ -77,7 +77,7 @@ std::vector<Point> torus_points(std::size_t n) {
   CGAL::Random rng(11);
   std::vector<Point> p;
   while(p.size() < n) {
-    const double u = rng.get_double(0, 2 * M_PI), v = rng.get_double(0, 2 * M_PI);
+    const double u = rng.get_double(0, 2 * CGAL_PI), v = rng.get_double(0, 2 * CGAL_PI);
     if(rng.get_double(0, torus_R + torus_r) > torus_R + torus_r * std::cos(v)) continue;
     const double w = torus_R + torus_r * std::cos(v);
     p.emplace_back(w * std::cos(u), w * std::sin(u), torus_r * std::sin(v));
@@ -335,7 +335,7 @@ MLS_TEST(local_fits_agree_with_exact) {
   CGAL::Random rng(5);
   double on_surface = 0, near = 0;
   for(int i = 0; i < 200; ++i) {
-    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    const double z = rng.get_double(-1, 1), t = rng.get_double(0, 2 * CGAL_PI), r = std::sqrt(1 - z * z);
     const double s = 1 + rng.get_double(-0.3, 0.3) * h;
     const Point x(s * r * std::cos(t), s * r * std::sin(t), s * z);
     const auto P = levin.project(x);
@@ -671,7 +671,7 @@ struct Bored_filleted_box_creases {
     };
     for(double y : {-b, b}) {
       segment({-a, y, c}, {xf, y, c});
-      arc(xf, y, zf, rf, 0, M_PI / 2, false);
+      arc(xf, y, zf, rf, 0, CGAL_PI / 2, false);
       segment({a, y, zf}, {a, y, -c});
       segment({a, y, -c}, {-a, y, -c});
       segment({-a, y, -c}, {-a, y, c});
@@ -679,7 +679,7 @@ struct Bored_filleted_box_creases {
     segment({-a, -b, c}, {-a, b, c});
     segment({-a, -b, -c}, {-a, b, -c});
     segment({a, -b, -c}, {a, b, -c});
-    for(double z : {-c, c}) arc(xb, 0, z, rb, 0, 2 * M_PI, true);
+    for(double z : {-c, c}) arc(xb, 0, z, rb, 0, 2 * CGAL_PI, true);
   }
 };
 
@@ -1019,7 +1019,7 @@ MLS_TEST(component_away_from_the_polylines_meshed) {
   for(const double z : {-0.8, -0.4, 0., 0.4, 0.8}) {
     std::vector<Point> circle;
     const double r = std::sqrt(1 - z * z);
-    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * M_PI / 24), r * std::sin(i * M_PI / 24), z);
+    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * CGAL_PI / 24), r * std::sin(i * CGAL_PI / 24), z);
     circle.push_back(circle.front());
     in.polylines.push_back(circle);
   }
@@ -1050,7 +1050,7 @@ MLS_TEST(feature_budget_drops_features) {
   for(const double z : {-0.8, -0.4, 0., 0.4, 0.8}) {
     std::vector<Point> circle;
     const double r = std::sqrt(1 - z * z);
-    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * M_PI / 24), r * std::sin(i * M_PI / 24), z);
+    for(int i = 0; i < 48; ++i) circle.emplace_back(r * std::cos(i * CGAL_PI / 24), r * std::sin(i * CGAL_PI / 24), z);
     circle.push_back(circle.front()); // closed: the first point repeated exactly
     in.polylines.push_back(circle);
   }

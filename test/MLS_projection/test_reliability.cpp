@@ -84,13 +84,13 @@ template <> struct Dim<3> {
 template <int D>
 std::vector<Eigen::Vector3d> round_shape(int n) {
   std::vector<Eigen::Vector3d> pts;
-  const double golden = M_PI * (3 - std::sqrt(5.));
+  const double golden = CGAL_PI * (3 - std::sqrt(5.));
   for(int i = 0; i < n; ++i) {
     if(D == 3) {
       const double z = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - z * z), t = golden * i;
       pts.emplace_back(r * std::cos(t), r * std::sin(t), z);
     } else {
-      const double t = 2 * M_PI * i / n;
+      const double t = 2 * CGAL_PI * i / n;
       pts.emplace_back(std::cos(t), std::sin(t), 0);
     }
   }
@@ -446,7 +446,7 @@ std::vector<P3> crease_and_smooth_queries(std::size_t n, unsigned seed) {
   std::normal_distribution<double> g(0, 0.01);
   std::vector<P3> q;
   for(std::size_t i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * (i + 0.3) / n;
+    const double t = 2 * CGAL_PI * (i + 0.3) / n;
     const Eigen::Vector3d e = mls_test::random_vector(g, gen);
     q.emplace_back(std::cos(t) + e[0], std::sin(t) + e[1], e[2]);
     const double z = 0.8 + 0.02 * double(i), r = std::sqrt(1 - z * z);

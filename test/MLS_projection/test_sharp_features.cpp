@@ -230,7 +230,7 @@ MLS_TEST(sphere_gives_no_polyline) {
   std::vector<Point> sphere;
   const int n = 2000;
   for(int i = 0; i < n; ++i) { // Fibonacci sphere, radius 1
-    const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * M_PI * (3 - std::sqrt(5.));
+    const double z = 1 - (2 * i + 1.) / n, rho = std::sqrt(1 - z * z), a = i * CGAL_PI * (3 - std::sqrt(5.));
     sphere.emplace_back(rho * std::cos(a), rho * std::sin(a), z);
   }
   MLS::Mixed_projection<Epick, 3> PM(sphere, wendland());
@@ -315,7 +315,7 @@ MLS_TEST(chaining_finds_a_junction_corner_without_apex) {
     }
   nodes.push_back({I::Feature_vec(5, 5, 5), I::Feature_vec(1, 0, 0)});
   std::vector<I::Feature_vec> corners;
-  const I::Chaining_parameters prm{1.5, std::cos(M_PI / 6), 1.0, 2.5, 3.0};
+  const I::Chaining_parameters prm{1.5, std::cos(CGAL_PI / 6), 1.0, 2.5, 3.0};
   const auto chains = I::chain_features(nodes, corners, prm);
   MLS_CHECK(corners.size() == 1);
   MLS_CHECK(chains.size() == 3);

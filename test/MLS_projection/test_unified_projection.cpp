@@ -139,7 +139,7 @@ MLS_TEST(unified_with_plane_agrees_with_levin) {
 
 MLS_TEST(wedge_2d_is_reproduced_exactly) {
   for(const double degrees : {60., 120.}) {
-    const Wedge_2 wedge{degrees * M_PI / 180};
+    const Wedge_2 wedge{degrees * CGAL_PI / 180};
     const auto pts = wedge.sample();
     MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PU(pts, wendland());
     const double h = PU.bandwidth();
@@ -176,7 +176,7 @@ MLS_TEST(wedge_2d_is_reproduced_exactly) {
 MLS_TEST(wedge_2d_apex_at_any_opening_angle) {
   for(const bool gaussian : {true, false})
     for(const double degrees : {20., 30., 50., 90., 150.}) {
-      const Wedge_2 wedge{degrees * M_PI / 180};
+      const Wedge_2 wedge{degrees * CGAL_PI / 180};
       const auto pts = wedge.sample();
       MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PU(pts, gaussian ? MLS::Projection_options() : wendland());
       const double h = PU.bandwidth();
@@ -199,7 +199,7 @@ MLS_TEST(wedge_2d_apex_at_any_opening_angle) {
 
 MLS_TEST(apex_ball_collapses_onto_apex) {
   // Figure 4: points in the normal cone of the apex (between the two ray normals) project onto it.
-  const Wedge_2 wedge{M_PI / 2};
+  const Wedge_2 wedge{CGAL_PI / 2};
   const auto pts = wedge.sample();
   MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PU(pts, wendland());
   for(const double a : {-0.3, 0.0, 0.3})
@@ -212,7 +212,7 @@ MLS_TEST(apex_ball_collapses_onto_apex) {
 
 MLS_TEST(edge_3d_is_reproduced_exactly) {
   for(const double degrees : {60., 90., 120.}) {
-    const Edge_3 edge{degrees * M_PI / 180};
+    const Edge_3 edge{degrees * CGAL_PI / 180};
     const auto pts = edge.sample();
     MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(pts, wendland());
     const double h = PU.bandwidth();
@@ -262,7 +262,7 @@ MLS_TEST(edge_3d_is_reproduced_exactly_on_a_dense_grid_across_the_crease) {
                                                        {MLS::Weight_kind::WENDLAND, 120.},
                                                        {MLS::Weight_kind::GAUSSIAN, 60.}};
   for(const auto& [weight, degrees] : cases) {
-    const Edge_3 edge{degrees * M_PI / 180};
+    const Edge_3 edge{degrees * CGAL_PI / 180};
     MLS::Projection_options o;
     o.weight = weight;
     MLS::Unified_projection<Epick, MLS::Wedge_fan_function_space<3>> PU(edge.sample(), o);
@@ -457,7 +457,7 @@ MLS_TEST(paraboloid_is_reproduced_exactly_by_quadratic_space) {
 // P_U quadratic 0.106 h against P_L's 0.369 h (P_U wedge: wedge_2d_apex_at_any_opening_angle).
 MLS_TEST(pinch_is_gone_near_a_sharp_2d_apex) {
   for(const double degrees : {60., 120.}) {
-    const Wedge_2 wedge{degrees * M_PI / 180};
+    const Wedge_2 wedge{degrees * CGAL_PI / 180};
     const auto pts = wedge.sample();
     MLS::Levin_projection<SC, MLS::Polynomial_function_space<2>> PL(pts);
     MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PQ(PL.shared_samples());
@@ -591,7 +591,7 @@ MLS_TEST(continuity_along_a_line_of_queries) {
   // consecutive projections move by at most a small multiple of the query spacing, except
   // where the line crosses the apex's collapse ball (projections equal there) or leaves it.
   for(const double degrees : {60., 120.}) {
-    const Wedge_2 wedge{degrees * M_PI / 180};
+    const Wedge_2 wedge{degrees * CGAL_PI / 180};
     const auto pts = wedge.sample();
     MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PU(pts, wendland());
     MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PQ(PU.shared_samples());
@@ -632,11 +632,11 @@ MLS_TEST(projection_property_of_the_closest_point_operators) {
   std::normal_distribution<double> noise(0, 0.003);
   std::vector<SC::Point_2> pts;
   for(int i = 0; i < 500; ++i) {
-    const double t = 2 * M_PI * i / 500;
+    const double t = 2 * CGAL_PI * i / 500;
     const V2 e = mls_test::random_vector<2>(noise, gen);
     pts.emplace_back(std::cos(t) + e[0], std::sin(t) + e[1]);
   }
-  const auto wedge_pts = Wedge_2{M_PI / 2}.sample();
+  const auto wedge_pts = Wedge_2{CGAL_PI / 2}.sample();
   MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PU(pts);
   MLS::Enriched_projection<SC, MLS::Quadratic_function_space<2>> PE(PU.shared_samples());
   MLS::Single_phase_projection<SC, MLS::Quadratic_function_space<2>> PS(PU.shared_samples());
@@ -651,7 +651,7 @@ MLS_TEST(projection_property_of_the_closest_point_operators) {
       worst[k] = std::max(worst[k], (eig(a.point) - eig(b.point)).norm() / P.bandwidth());
       ++k;
     };
-    const double t = 0.05 + 2 * M_PI * i / 40, rad = 1 + 0.3 * PU.bandwidth() * std::sin(5. * i);
+    const double t = 0.05 + 2 * CGAL_PI * i / 40, rad = 1 + 0.3 * PU.bandwidth() * std::sin(5. * i);
     const SC::Point_2 r(rad * std::cos(t), rad * std::sin(t));
     check(PU, r);
     check(PE, r);

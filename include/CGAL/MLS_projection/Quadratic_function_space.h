@@ -8,6 +8,8 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -35,7 +37,7 @@ inline int depressed_cubic_real_roots(double p, double q, double t[3]) {
   const double arg = 1.5 * q / p * std::sqrt(-3. / p); // cos(3 phi) in the trigonometric form
   if(std::abs(arg) <= 1. + 1e-12) {                    // three real roots (two may coincide)
     const double phi = std::acos(std::clamp(arg, -1., 1.)) / 3.;
-    for(int k = 0; k < 3; ++k) t[k] = 2. * m * std::cos(phi - 2. * M_PI * k / 3.);
+    for(int k = 0; k < 3; ++k) t[k] = 2. * m * std::cos(phi - 2. * CGAL_PI * k / 3.);
     return 3;
   }
   t[0] = (q > 0 ? -2. : 2.) * m * std::cosh(std::acosh(std::abs(arg)) / 3.);

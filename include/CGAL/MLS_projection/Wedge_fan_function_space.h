@@ -7,6 +7,8 @@
 #include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/internal/Dimension.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Dense>
 
 #include <array>
@@ -86,11 +88,11 @@ public:
   Parameters identity() const {
     Parameters c;
     if constexpr(D == 2) {
-      c << 0., M_PI;
+      c << 0., CGAL_PI;
     } else {
       for(int i = 0; i < N; ++i) {
         c[2 * i] = 0.;
-        c[2 * i + 1] = 2. * M_PI * i / N;
+        c[2 * i + 1] = 2. * CGAL_PI * i / N;
       }
     }
     return c;
@@ -138,20 +140,20 @@ public:
             sz += w[i] * p[i][1];
           }
         const double slope = sx > 0 ? sz / sx : (side == 0 ? g[0] : -g[0]);
-        r[side] = side == 0 ? std::atan(slope) : M_PI - std::atan(slope);
+        r[side] = side == 0 ? std::atan(slope) : CGAL_PI - std::atan(slope);
       }
     } else {
       for(int k = 0; k < N; ++k) {
         // the least-squares plane through the apex of the points of the sector
-        const double lon = 2. * M_PI * k / N;
+        const double lon = 2. * CGAL_PI * k / N;
         M As = M::Zero();
         U bs = U::Zero();
         int count = 0;
         for(std::size_t i = 0; i < n; ++i) {
           if(!(w[i] > 0) || !(std::hypot(p[i][0], p[i][1]) > 0)) continue;
           double dl = std::atan2(p[i][1], p[i][0]) - lon;
-          dl -= 2. * M_PI * std::floor((dl + M_PI) / (2. * M_PI));
-          if(std::abs(dl) >= M_PI / N) continue;
+          dl -= 2. * CGAL_PI * std::floor((dl + CGAL_PI) / (2. * CGAL_PI));
+          if(std::abs(dl) >= CGAL_PI / N) continue;
           const U u = p[i].template head<2>();
           As.noalias() += w[i] * u * u.transpose();
           bs.noalias() += w[i] * p[i][2] * u;
@@ -316,8 +318,8 @@ private:
   using V = internal::Vec<D>;
 
   static double wrap(double t, double lo) { // t modulo 2 pi, in [lo, lo + 2 pi)
-    double r = t - 2. * M_PI * std::floor((t - lo) / (2. * M_PI));
-    if(r >= lo + 2. * M_PI) r -= 2. * M_PI; // rounding
+    double r = t - 2. * CGAL_PI * std::floor((t - lo) / (2. * CGAL_PI));
+    if(r >= lo + 2. * CGAL_PI) r -= 2. * CGAL_PI; // rounding
     return r;
   }
 
@@ -336,7 +338,7 @@ private:
   static Fan prepare(const Parameters& c) {
     Fan f;
     if constexpr(D == 2) {
-      const double t0 = wrap(c[0], -M_PI / 2), t1 = wrap(c[1], -M_PI / 2);
+      const double t0 = wrap(c[0], -CGAL_PI / 2), t1 = wrap(c[1], -CGAL_PI / 2);
       f.order = t1 < t0 ? std::array<int, 2>{1, 0} : std::array<int, 2>{0, 1};
       const double ta = f.order[0] == 0 ? t0 : t1, tb = f.order[0] == 0 ? t1 : t0;
       f.v[0] = V(std::cos(ta), std::sin(ta));
@@ -367,13 +369,13 @@ private:
       for(int j = 0; j < N; ++j) {
         const int k = (j + 1) % N;
         double gap = lon[f.order[k]] - lon[f.order[j]];
-        if(k == 0) gap += 2. * M_PI;
+        if(k == 0) gap += 2. * CGAL_PI;
         const V n = f.v[j].cross(f.v[k]);
         const double len = n.norm();
         f.cn[j] = f.v[j].dot(f.v[k]);
         f.ok[j] = len > 1e-12 && 1. - f.cn[j] * f.cn[j] > 0.;
         f.inverse_det[j] = f.ok[j] ? 1. / (1. - f.cn[j] * f.cn[j]) : 0.;
-        f.fn[j] = f.ok[j] ? V(((gap > M_PI) ? -1. : 1.) * n / len) : V::Zero();
+        f.fn[j] = f.ok[j] ? V(((gap > CGAL_PI) ? -1. : 1.) * n / len) : V::Zero();
       }
     }
     return f;

@@ -9,6 +9,7 @@
 #include <CGAL/MLS_projection/internal/polyline_chaining.h>
 #include <CGAL/MLS_projection/project_points.h>
 
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -151,8 +152,8 @@ bool fan_creases(const Projection_result<GeomTraits, 3>& r, double min_angle, Fa
   std::array<int, N> order;
   for(int i = 0; i < N; ++i) {
     double t = r.coefficients[2 * i + 1];
-    t -= 2. * M_PI * std::floor(t / (2. * M_PI));
-    if(t >= 2. * M_PI) t -= 2. * M_PI;
+    t -= 2. * CGAL_PI * std::floor(t / (2. * CGAL_PI));
+    if(t >= 2. * CGAL_PI) t -= 2. * CGAL_PI;
     lon[i] = t;
     order[i] = i;
   }
@@ -166,10 +167,10 @@ bool fan_creases(const Projection_result<GeomTraits, 3>& r, double min_angle, Fa
   for(int j = 0; j < N; ++j) {
     const int k = (j + 1) % N;
     double gap = lon[order[k]] - lon[order[j]];
-    if(k == 0) gap += 2. * M_PI;
+    if(k == 0) gap += 2. * CGAL_PI;
     const Feature_vec n = v[j].cross(v[k]);
     ok[j] = n.norm() > 1e-9;
-    fn[j] = ok[j] ? Feature_vec((gap > M_PI ? -1. : 1.) * n.normalized()) : Feature_vec::Zero();
+    fn[j] = ok[j] ? Feature_vec((gap > CGAL_PI ? -1. : 1.) * n.normalized()) : Feature_vec::Zero();
   }
   const auto to_world = [&](const Feature_vec& a) { return Feature_vec(a[0] * t0 + a[1] * t1 + a[2] * nz); };
   out.apex = KT::to_eigen(r.frame.origin);
@@ -234,7 +235,7 @@ Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
   Sharp_features<GeomTraits> out;
   const double h = options.bandwidth > 0 ? options.bandwidth : double(projection.bandwidth());
   if(projected_samples.empty() || !(h > 0) || !std::isfinite(h)) return out;
-  const double deg = M_PI / 180.;
+  const double deg = CGAL_PI / 180.;
   const double cos_link = std::cos(options.link_angle * deg);
   const double support = options.support_radius * h;
 

@@ -162,7 +162,7 @@ void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, cons
 template <class Point_3, class Function>
 bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radius) {
   const int n = 256;
-  const double golden = M_PI * (3. - std::sqrt(5.));
+  const double golden = CGAL_PI * (3. - std::sqrt(5.));
   for(int i = 0; i < n; ++i) {
     const double z = 1. - (2. * i + 1.) / n, r = std::sqrt((std::max)(0., 1. - z * z)), t = golden * i;
     const Point_3 p(CGAL::to_double(centre.x()) + radius * r * std::cos(t), CGAL::to_double(centre.y()) + radius * r * std::sin(t),

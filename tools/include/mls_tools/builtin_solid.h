@@ -21,6 +21,8 @@
 #include <mls_tools/point_io.h>
 #include <mls_tools/synthetic.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -159,7 +161,7 @@ protected:
     const int j = 3 - axis - i;
     Vec3 n{0., 0., 0.};
     n[std::size_t(axis)] = sign;
-    const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]) - M_PI * disk_radius * disk_radius;
+    const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]) - CGAL_PI * disk_radius * disk_radius;
     const auto in_disk = [=](double a, double b) {
       return disk_radius > 0 && std::hypot(a - disk_centre[0], b - disk_centre[1]) < disk_radius;
     };
@@ -226,7 +228,7 @@ public:
         return std::abs(x) <= a && std::abs(z) <= c && !(x > xf && z > zf && std::hypot(x - xf, z - zf) > rf);
       };
       patches_.push_back(
-        {4 * a * c - (rf * rf - M_PI * rf * rf / 4),
+        {4 * a * c - (rf * rf - CGAL_PI * rf * rf / 4),
          [=](double u, double v, Surface_point& s) {
            const double x = -a + 2 * a * u, z = -c + 2 * c * v;
            if(!inside_2d(x, z)) return false;
@@ -247,22 +249,22 @@ public:
          }});
     }
     // The fillet: (xf + rf cos t, y, zf + rf sin t), t in [0, pi/2].
-    patches_.push_back({M_PI / 2 * rf * 2 * b,
+    patches_.push_back({CGAL_PI / 2 * rf * 2 * b,
                         [=](double u, double v, Surface_point& s) {
-                          const double t = u * M_PI / 2, y = -b + 2 * b * v;
+                          const double t = u * CGAL_PI / 2, y = -b + 2 * b * v;
                           s = {{xf + rf * std::cos(t), y, zf + rf * std::sin(t)}, {std::cos(t), 0., std::sin(t)}};
                           return true;
                         },
                         [=](const Vec3& p) {
-                          const double t = std::clamp(std::atan2(p[2] - zf, p[0] - xf), 0., M_PI / 2);
+                          const double t = std::clamp(std::atan2(p[2] - zf, p[0] - xf), 0., CGAL_PI / 2);
                           const double y = std::clamp(p[1], -b, b);
                           return Surface_point{{xf + rf * std::cos(t), y, zf + rf * std::sin(t)},
                                                {std::cos(t), 0., std::sin(t)}};
                         }});
     // The bore's wall, normal towards the bore's axis (out of the solid).
-    patches_.push_back({2 * M_PI * rb * 2 * c,
+    patches_.push_back({2 * CGAL_PI * rb * 2 * c,
                         [=](double u, double v, Surface_point& s) {
-                          const double t = 2 * M_PI * u, z = -c + 2 * c * v;
+                          const double t = 2 * CGAL_PI * u, z = -c + 2 * c * v;
                           s = {{xb + rb * std::cos(t), yb + rb * std::sin(t), z}, {-std::cos(t), -std::sin(t), 0.}};
                           return true;
                         },
@@ -279,12 +281,12 @@ public:
       add_segment({a, sy * b, -c}, {a, sy * b, zf});  // vertical edges of x = a, up to the fillet
       add_segment({-a, sy * b, c}, {xf, sy * b, c});  // top edges along x, up to the fillet
       add_segment({-a, sy * b, -c}, {a, sy * b, -c}); // bottom edges along x
-      add_arc({xf, sy * b, zf}, {1., 0., 0.}, {0., 0., 1.}, rf, 0., M_PI / 2); // fillet ends
+      add_arc({xf, sy * b, zf}, {1., 0., 0.}, {0., 0., 1.}, rf, 0., CGAL_PI / 2); // fillet ends
     }
     for(double sz : {-1., 1.}) add_segment({-a, -b, sz * c}, {-a, b, sz * c}); // edges of x = -a along y
     add_segment({a, -b, -c}, {a, b, -c});                                         // bottom edge of x = a
     for(double sz : {-1., 1.})                                                    // the bore's rims
-      add_arc({xb, yb, sz * c}, {1., 0., 0.}, {0., 1., 0.}, rb, 0., 2 * M_PI);
+      add_arc({xb, yb, sz * c}, {1., 0., 0.}, {0., 1., 0.}, rb, 0., 2 * CGAL_PI);
     for(double sy : {-1., 1.}) {
       for(double sz : {-1., 1.}) corners_.push_back({-a, sy * b, sz * c});
       corners_.push_back({a, sy * b, -c});
@@ -306,9 +308,9 @@ public:
 class Sphere_solid : public Analytic_solid {
 public:
   explicit Sphere_solid(double radius = 0.6) : r_(radius) {
-    patches_.push_back({4 * M_PI * r_ * r_,
+    patches_.push_back({4 * CGAL_PI * r_ * r_,
                         [r = r_](double u, double v, Surface_point& s) {
-                          const double z = 1 - 2 * u, t = 2 * M_PI * v, q = std::sqrt(std::max(0., 1 - z * z));
+                          const double z = 1 - 2 * u, t = 2 * CGAL_PI * v, q = std::sqrt(std::max(0., 1 - z * z));
                           const Vec3 n{q * std::cos(t), q * std::sin(t), z};
                           s = {r * n, n};
                           return true;

@@ -10,6 +10,8 @@
 
 #include <mls_tools/point_io.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -26,7 +28,7 @@ public:
   double gaussian() {
     const double u = 1. - uniform(); // in (0, 1]
     const double v = uniform();
-    return std::sqrt(-2. * std::log(u)) * std::cos(2. * M_PI * v);
+    return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * v);
   }
 
 private:
@@ -45,8 +47,8 @@ inline Point_cloud noisy_torus(std::size_t n = 20000, double R = 1., double r = 
   cloud.points.reserve(n);
   cloud.normals.reserve(n);
   while(cloud.points.size() < n) {
-    const double u = 2. * M_PI * random.uniform(); // around the axis
-    const double v = 2. * M_PI * random.uniform(); // around the tube
+    const double u = 2. * CGAL_PI * random.uniform(); // around the axis
+    const double v = 2. * CGAL_PI * random.uniform(); // around the tube
     // The area element is proportional to R + r cos v: rejection sampling.
     if(random.uniform() * (R + r) > R + r * std::cos(v)) continue;
     const double nx = std::cos(v) * std::cos(u), ny = std::cos(v) * std::sin(u), nz = std::sin(v);

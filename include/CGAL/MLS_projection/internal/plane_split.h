@@ -13,6 +13,8 @@
 #include <CGAL/MLS_projection/internal/Dimension.h>
 #include <CGAL/MLS_projection/internal/weighted_pca.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Eigenvalues>
 
 #include <array>
@@ -126,13 +128,13 @@ inline Plane_split<3, 3> split_in_three(const std::vector<Vec<3>>& p, const std:
   std::vector<int> label(p.size());
   const Vec<3> a = pca.eigenvectors.col(2), b = pca.eigenvectors.col(1);
   for(int rot = 0; rot < 3; ++rot) {
-    const double phase = rot * (2 * M_PI / 9);
+    const double phase = rot * (2 * CGAL_PI / 9);
     for(std::size_t i = 0; i < p.size(); ++i) {
       const Vec<3> d = p[i] - pca.centroid;
       double ang = std::atan2(d.dot(b), d.dot(a)) - phase;
-      while(ang < 0) ang += 2 * M_PI;
-      while(ang >= 2 * M_PI) ang -= 2 * M_PI;
-      label[i] = (std::min)(2, int(ang / (2 * M_PI / 3)));
+      while(ang < 0) ang += 2 * CGAL_PI;
+      while(ang >= 2 * CGAL_PI) ang -= 2 * CGAL_PI;
+      label[i] = (std::min)(2, int(ang / (2 * CGAL_PI / 3)));
     }
     const auto s = refine_split<3, 3>(p, w, label, 4);
     if(s.valid && s.energy < best.energy) best = s;
