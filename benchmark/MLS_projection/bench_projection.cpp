@@ -413,7 +413,8 @@ Row run_operator(const Input& input, const std::vector<Point>& queries, const ch
   row.outputs.reserve(results.size());
   for(const auto& r : results) {
     if(!r.is_success()) ++row.failures;
-    if(r.status == CGAL::MLS::Projection_status::NOT_CONVERGED) ++row.not_converged;
+    if(r.status == CGAL::MLS::Projection_status::NOT_CONVERGED || r.status == CGAL::MLS::Projection_status::LEVIN_FALLBACK)
+      ++row.not_converged; // the table's column counts both
     if(r.is_on_feature) ++row.on_feature;
     neighbors += double(r.number_of_neighbors);
     row.outputs.push_back(r.point); // a failed projection keeps the query point: counted as it is

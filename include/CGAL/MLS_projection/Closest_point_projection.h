@@ -115,7 +115,7 @@ struct has_foot_derivatives<S, std::void_t<decltype(std::declval<const S&>().clo
 /// (or three) hyperplanes meet, with the member made of those hyperplanes when the space provides
 /// one (`member_of_hyperplanes()`, optional in `MLSFunctionSpace`). A fit whose \f$C_{H,f}(r)\f$ is
 /// further from \f$r\f$ than Levin's frame origin plus \f$2h\f$ is penalised and rejected; when no
-/// start gives a valid fit, the result is Levin's projection with the status `NOT_CONVERGED`.
+/// start gives a valid fit, the result is Levin's projection with the status `LEVIN_FALLBACK`.
 ///
 /// With a `Warm_start`, a projection first continues the final fit of the last one (a nearby
 /// query's, the paper's section 6) and keeps it when it converges, is supported by the data and
@@ -1083,11 +1083,11 @@ protected:
     return options;
   }
 
-  // Levin's answer, marked as not converged, when the joint optimisation fails.
+  // Levin's answer, marked as a fallback, when the joint optimisation fails.
   Result fallback(const Point& query, int iterations) const {
     Result res = levin_.project(query);
     res.iterations += iterations;
-    if(res.is_success()) res.status = Projection_status::NOT_CONVERGED;
+    if(res.is_success()) res.status = Projection_status::LEVIN_FALLBACK;
     return res;
   }
 

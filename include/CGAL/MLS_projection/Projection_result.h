@@ -57,7 +57,7 @@ struct Projection_result {
   /// Whether the projection succeeded, and if not, why.
   Projection_status status = Projection_status::INVALID_QUERY;
 
-  /// `true` when `status` is a success (`CONVERGED` or `NOT_CONVERGED`).
+  /// `true` when `status` is a success (`CONVERGED`, `NOT_CONVERGED` or `LEVIN_FALLBACK`).
   bool is_success() const { return MLS::is_success(status); }
 };
 
