@@ -8,7 +8,7 @@
 // meshes a built-in point set sampled from an analytic solid with sharp edges, corners and a
 // curved part (<mls_tools/builtin_solid.h>).
 
-#include <CGAL/MLS_projection/Meshing_options.h>
+#include <CGAL/MLS_projection/Meshing_report.h>
 
 #include <mls_tools/arguments.h>
 #include <mls_tools/attributes.h>
@@ -45,7 +45,7 @@ namespace {
 using mls_tools::Input_error;
 using mls_tools::Point_cloud;
 using mls_tools::Usage_error;
-using Options = CGAL::MLS::Meshing_options;
+using Mesher = CGAL::MLS::Mesher;
 using K = mls_tools::Mesh_kernel;
 using mls_tools::Mesh;
 
@@ -59,14 +59,14 @@ constexpr std::size_t minimum_points = 10;
 // The command line. Defaults as mls_project's: the unified operator with the mixed space
 // (quadratic for levin, which cannot use wedge or mixed).
 
-const std::vector<std::pair<std::string, Options::Operator>> operator_choices = {
-  {"levin", Options::Operator::LEVIN}, {"unified", Options::Operator::UNIFIED}};
-const std::vector<std::pair<std::string, Options::Space>> space_choices = {{"plane", Options::Space::PLANE},
-                                                                          {"quadratic", Options::Space::QUADRATIC},
-                                                                          {"wedge", Options::Space::WEDGE},
-                                                                          {"mixed", Options::Space::MIXED}};
-const std::vector<std::pair<std::string, Options::Mesher>> mesher_choices = {
-  {"mesh3", Options::Mesher::MESH_3}, {"surface_mesher", Options::Mesher::SURFACE_MESHER}};
+enum class Operator { LEVIN, UNIFIED };
+enum class Space { PLANE, QUADRATIC, WEDGE, MIXED };
+const std::vector<std::pair<std::string, Operator>> operator_choices = {{"levin", Operator::LEVIN},
+                                                                       {"unified", Operator::UNIFIED}};
+const std::vector<std::pair<std::string, Space>> space_choices = {
+  {"plane", Space::PLANE}, {"quadratic", Space::QUADRATIC}, {"wedge", Space::WEDGE}, {"mixed", Space::MIXED}};
+const std::vector<std::pair<std::string, Mesher>> mesher_choices = {{"mesh3", Mesher::MESH_3},
+                                                                   {"surface_mesher", Mesher::SURFACE_MESHER}};
 
 template <class T>
 std::string name_of(T value, const std::vector<std::pair<std::string, T>>& choices) {
@@ -77,14 +77,12 @@ std::string name_of(T value, const std::vector<std::pair<std::string, T>>& choic
 
 struct Settings {
   std::string input, output = default_output;
-  Options::Operator op = Options::Operator::UNIFIED;
-  std::optional<Options::Space> space; // unset: mixed, quadratic with levin
-  Options::Mesher mesher = Options::Mesher::MESH_3;
+  Operator op = Operator::UNIFIED;
+  std::optional<Space> space; // unset: mixed, quadratic with levin
+  Mesher mesher = Mesher::MESH_3;
   bool features = true; // auto
   bool remove_outliers = true;
   bool open = false;
-  bool screening = true;
-  double screening_residual = 0; // 0: the library's default
   double size = 0, distance = 0, bandwidth = 0;
   double time_limit = 0; // 0: none
   int threads = 0; // 0: all
@@ -120,14 +118,6 @@ mls_tools::Argument_parser make_parser(Settings& s) {
              [&s](const std::string& v) {
                s.remove_outliers = mls_tools::parse_choice<bool>("--outliers", v, {{"remove", true}, {"keep", false}});
              });
-  parser.add("--screening", "on|off",
-             "with wedge or mixed: project the smooth parts' seeds with levin, the others with the operator (default: on)",
-             [&s](const std::string& v) {
-               s.screening = mls_tools::parse_choice<bool>("--screening", v, {{"on", true}, {"off", false}});
-             });
-  parser.add("--screening-residual", "R",
-             "the screening's residual threshold, > 0, in units of h (default: 0.01)",
-             [&s](const std::string& v) { s.screening_residual = mls_tools::parse_positive_double("--screening-residual", v); });
   parser.add("--size", "S", "facet size bound, > 0, in input units (default: 2 x the average spacing)",
              [&s](const std::string& v) { s.size = mls_tools::parse_positive_double("--size", v); });
   parser.add("--distance", "D", "facet distance bound, > 0, in input units (default: 0.25 x the average spacing)",
@@ -152,7 +142,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
     << "Usage: mls_mesh [--input P] [--output O] [--space plane|quadratic|wedge|mixed]\n"
        "                [--operator levin|unified] [--mesher mesh3|surface_mesher] [--features auto|off]\n"
        "                [--outliers remove|keep] [--open]\n"
-       "                [--screening on|off] [--screening-residual R] [--size S] [--distance D]\n"
+       "                [--size S] [--distance D]\n"
        "                [--h H] [--threads N] [--time-limit T] [--parallel-mesher] [--quiet]\n"
        "\n"
        "Meshes the moving-least-squares (MLS) surface of a 3D point set into a closed, manifold\n"
@@ -185,10 +175,9 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "the holes wider than about 4 spacings). Coplanar points are then accepted. mesh3 only.\n"
        "Without --open the surface is closed, and an open scan fails (\"the surface is not closed\").\n"
        "\n"
-       "Screening (--screening on): with wedge or mixed, the seeds of the implicit function (and the\n"
-       "feature detection's points) are projected with levin first, and only those whose quadratic\n"
-       "fit leaves a residual above R h (--screening-residual, default 0.01) go to the unified\n"
-       "operator: the creases and corners. --screening off projects every seed with the operator.\n"
+       "Screening: with wedge or mixed, the seeds of the implicit function (and the feature\n"
+       "detection's points) are projected with levin first, and only those whose quadratic fit\n"
+       "leaves a residual above the noise go to the unified operator: the creases and corners.\n"
        "\n"
        "Threads: the normals, the seeds and the features are computed in parallel (--threads), and\n"
        "the mesh is the same, byte for byte, for any number of threads. Mesh_3's own refinement is\n"
@@ -221,10 +210,10 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "command line.\n";
 }
 
-Options::Space choose_space(const Settings& s) {
-  const bool levin = s.op == Options::Operator::LEVIN;
-  if(!s.space) return levin ? Options::Space::QUADRATIC : Options::Space::MIXED;
-  if(levin && (*s.space == Options::Space::WEDGE || *s.space == Options::Space::MIXED))
+Space choose_space(const Settings& s) {
+  const bool levin = s.op == Operator::LEVIN;
+  if(!s.space) return levin ? Space::QUADRATIC : Space::MIXED;
+  if(levin && (*s.space == Space::WEDGE || *s.space == Space::MIXED))
     throw Usage_error("--operator levin cannot use --space " + name_of(*s.space, space_choices) +
                       ": it fits a height function over its frame, which needs a graph function space (plane|quadratic)");
   return *s.space;
@@ -307,18 +296,20 @@ bool is_manifold(const Mesh& mesh) {
 
 // ---------------------------------------------------------------------------------------------
 
-/// One progress bar per stage reported by the meshing function.
+/// One progress bar per stage of the meshing function (`CGAL::MLS::meshing_stage()`), from the
+/// fraction of the whole job that it reports.
 class Stage_progress {
 public:
   explicit Stage_progress(bool enabled) : enabled_(enabled) {}
-  void operator()(const char* stage, double fraction) {
+  void operator()(double fraction) {
     if(!enabled_) return;
-    if(!bar_ || stage_ != stage) {
+    const CGAL::MLS::Meshing_stage stage = CGAL::MLS::meshing_stage(fraction);
+    if(!bar_ || stage_ != stage.name) {
       if(bar_) bar_->finish();
-      stage_ = stage;
-      bar_ = std::make_unique<mls_tools::Progress_bar>(std::string(tool_name) + ": " + stage, true);
+      stage_ = stage.name;
+      bar_ = std::make_unique<mls_tools::Progress_bar>(std::string(tool_name) + ": " + stage.name, true);
     }
-    bar_->update(fraction);
+    bar_->update((fraction - stage.begin) / (stage.end - stage.begin));
   }
   void finish() {
     if(bar_) bar_->finish();
@@ -338,21 +329,25 @@ int run(int argc, char** argv) {
     print_help(parser);
     return 0;
   }
-  Options options;
-  options.projection_operator = s.op;
-  options.space = choose_space(s);
-  options.mesher = s.mesher;
-  options.features = s.features;
-  options.remove_outliers = s.remove_outliers;
-  options.open_surface = s.open;
-  if(s.open && s.mesher != Options::Mesher::MESH_3) throw Usage_error("--open meshes with --mesher mesh3 only");
-  options.parallel_mesher = s.parallel_mesher;
-  options.facet_size = s.size;
-  options.max_meshing_seconds = s.time_limit;
-  options.facet_distance = s.distance;
-  options.bandwidth = s.bandwidth;
-  options.implicit_function.levin_screening = s.screening;
-  if(s.screening_residual > 0) options.implicit_function.screening_residual = s.screening_residual;
+  const Space space = choose_space(s);
+  using Choice = mls_tools::Operator_choice;
+  mls_tools::Mesh_settings settings;
+  if(s.op == Operator::LEVIN) settings.projection_operator = space == Space::PLANE ? Choice::LEVIN_PLANE : Choice::LEVIN_QUADRATIC;
+  else
+    settings.projection_operator = space == Space::PLANE       ? Choice::UNIFIED_PLANE
+                                   : space == Space::QUADRATIC ? Choice::UNIFIED_QUADRATIC
+                                   : space == Space::WEDGE     ? Choice::UNIFIED_WEDGE
+                                                               : Choice::MIXED;
+  settings.mesher = s.mesher;
+  settings.features = s.features;
+  settings.remove_outliers = s.remove_outliers;
+  settings.open_surface = s.open;
+  if(s.open && s.mesher != Mesher::MESH_3) throw Usage_error("--open meshes with --mesher mesh3 only");
+  settings.parallel_mesher = s.parallel_mesher;
+  settings.facet_size = s.size;
+  settings.facet_distance = s.distance;
+  settings.bandwidth = s.bandwidth;
+  settings.time_limit = s.time_limit;
 
   // Check that the output can be written before doing any work.
   mls_tools::Atomic_output_file output(s.output);
@@ -370,7 +365,10 @@ int run(int argc, char** argv) {
 #endif
 
   Stage_progress progress(!s.quiet && mls_tools::stderr_is_terminal());
-  options.stage_progress = [&progress](const char* stage, double fraction) { progress(stage, fraction); };
+  settings.callback = [&progress](double fraction) {
+    progress(fraction);
+    return true;
+  };
 
   mls_tools::Mesh_input job;
   job.points.reserve(input.size());
@@ -382,10 +380,9 @@ int run(int argc, char** argv) {
   job.channels = input.channels.size();
   job.attributes = input.attributes;
   CGAL::MLS::Meshing_report report;
-  options.report = &report;
   Mesh mesh;
-  const bool ok = input.has_normals ? mls_tools::reconstruct_with_normals(job, mesh, options)
-                                    : mls_tools::reconstruct_without_normals(job, mesh, options);
+  const bool ok = input.has_normals ? mls_tools::reconstruct_with_normals(job, mesh, settings, report)
+                                    : mls_tools::reconstruct_without_normals(job, mesh, settings, report);
   progress.finish();
   if(!ok || mesh.number_of_faces() == 0)
     throw Input_error("meshing " + input_name + " failed: " + (*report.failure ? report.failure : "no facet"));
@@ -415,7 +412,7 @@ int run(int argc, char** argv) {
                "output %s%s\n",
                tool_name, input.size(),
                outliers.c_str(), name_of(s.op, operator_choices).c_str(),
-               name_of(options.space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
+               name_of(space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds, gaps.c_str(),
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,
                report.features_dropped ? (report.feature_budget_exceeded ? " (not protected: Mesh_3 did not finish with them)" : " (not protected: Mesh_3 failed with them)") : "", removed.c_str(), closure.c_str(), manifold ? "manifold" : "not manifold", s.output.c_str(), written.c_str());

@@ -54,13 +54,13 @@
 //     by 10% on every side, each with a uniformly random unit normal (fixed seed).
 // --mesh-dir DIR writes each mesh as DIR/<shape>-mls.off, DIR/<shape>-poisson.off (default
 // criteria) and DIR/<shape>-poisson-matched.off, and the input points as DIR/<shape>-input.xyz.
-// --max-meshing-seconds S stops MLS's Mesh_3 after S seconds (Meshing_options::max_meshing_seconds;
+// --max-meshing-seconds S stops MLS's Mesh_3 after S seconds (the named parameter maximum_running_time;
 // default 0: no limit), which then fails.
 
-#include <CGAL/MLS_projection/Meshing_options.h>
-#include <CGAL/MLS_projection/mls_surface_reconstruction.h>
+#include <CGAL/MLS_projection/Meshing_report.h>
 
 #include <mls_tools/builtin_solid.h>
+#include <mls_tools/mesh_job.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -89,6 +89,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -106,7 +107,7 @@ using Point = K::Point_3;
 using Vector = K::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Point_with_normal = std::pair<Point, Vector>;
-using Options = CGAL::MLS::Meshing_options;
+using Choice = mls_tools::Operator_choice;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 mls_tools::Vec3 to_vec(const Point& p) { return {p.x(), p.y(), p.z()}; }
@@ -334,8 +335,8 @@ struct Settings {
   bool poisson_default = true, poisson_matched = true;
   double noise = -1; // < 0: 0.1 x spacing
   std::vector<std::string> shapes = {"solid", "solid+noise", "sphere"};
-  Options::Operator op = Options::Operator::UNIFIED;
-  Options::Space space = Options::Space::MIXED;
+  bool levin = false;
+  int space = 3; // plane, quadratic, wedge, mixed
   int threads = 0;
   std::optional<std::array<double, 4>> hole; // centre, radius
   double outliers = 0;                       // fraction of the samples
@@ -409,21 +410,22 @@ Settings parse(int argc, char** argv) {
       while(std::getline(ss, item, ',')) s.shapes.push_back(item);
     } else if(a == "--operator") {
       const std::string v = value();
-      if(v == "levin") s.op = Options::Operator::LEVIN;
-      else if(v == "unified") s.op = Options::Operator::UNIFIED;
+      if(v == "levin") s.levin = true;
+      else if(v == "unified") s.levin = false;
       else usage(2);
     } else if(a == "--space") {
       const std::string v = value();
-      if(v == "plane") s.space = Options::Space::PLANE;
-      else if(v == "quadratic") s.space = Options::Space::QUADRATIC;
-      else if(v == "wedge") s.space = Options::Space::WEDGE;
-      else if(v == "mixed") s.space = Options::Space::MIXED;
+      if(v == "plane") s.space = 0;
+      else if(v == "quadratic") s.space = 1;
+      else if(v == "wedge") s.space = 2;
+      else if(v == "mixed") s.space = 3;
       else usage(2);
       s.space_given = true;
     } else
       usage(2);
   }
-  if(s.op == Options::Operator::LEVIN && !s.space_given) s.space = Options::Space::QUADRATIC;
+  if(s.levin && !s.space_given) s.space = 1;
+  if(s.levin && s.space > 1) usage(2);
   if(!(s.spacing > 0) || !(s.outliers >= 0)) usage(2);
   return s;
 }
@@ -545,8 +547,8 @@ int main(int argc, char** argv) {
   if(s.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(s.threads));
 #endif
   const char* const space_names[] = {"plane", "quadratic", "wedge", "mixed"};
-  const std::string mls_name = std::string("MLS ") + (s.op == Options::Operator::LEVIN ? "levin" : "unified") + "/" +
-                               space_names[int(s.space)];
+  const std::string mls_name = std::string("MLS ") + (s.levin ? "levin" : "unified") + "/" +
+                               space_names[s.space];
   std::printf("bench_meshing: %s, noise %s, MLS = %s, Mesh_3, features %s; Poisson = "
               "poisson_surface_reconstruction_delaunay; threads %s\n\n",
               s.points > 0 ? ("about " + std::to_string(s.points) + " points per shape").c_str()
@@ -633,26 +635,29 @@ int main(int argc, char** argv) {
     }
 
     if(s.mls) {
-      Options options;
-      options.projection_operator = s.op;
-      options.space = s.space;
-      options.features = s.features;
-      options.max_meshing_seconds = s.max_meshing_seconds;
+      mls_tools::Mesh_settings settings;
+      settings.projection_operator =
+        s.levin ? (s.space == 0 ? Choice::LEVIN_PLANE : Choice::LEVIN_QUADRATIC)
+                : std::array<Choice, 4>{Choice::UNIFIED_PLANE, Choice::UNIFIED_QUADRATIC, Choice::UNIFIED_WEDGE, Choice::MIXED}[s.space];
+      settings.features = s.features;
+      settings.time_limit = s.max_meshing_seconds;
       CGAL::MLS::Meshing_report report;
-      options.report = &report;
       const auto start = std::chrono::steady_clock::now();
-      std::string last_stage;
-      options.stage_progress = [&](const char* stage, double) {
-        if(stage != last_stage) {
+      const char* last_stage = "";
+      settings.callback = [&](double fraction) {
+        const char* stage = CGAL::MLS::meshing_stage(fraction).name;
+        if(std::strcmp(stage, last_stage) != 0) {
           last_stage = stage;
           std::fprintf(stderr, "%s: MLS stage %s at %.1f s\n", shape.c_str(), stage, seconds_since(start));
         }
+        return true;
       };
+      mls_tools::Mesh_input job;
+      job.points = points;
       Mesh mesh;
       const double cpu = cpu_now();
       const auto t = std::chrono::steady_clock::now();
-      const bool ok = CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(
-        points, mesh, options, CGAL::parameters::point_map(point_map).normal_map(normal_map));
+      const bool ok = mls_tools::reconstruct_with_normals(job, mesh, settings, report);
       const double seconds = seconds_since(t);
       const double cpu_seconds = cpu_now() - cpu;
       row.mls = measure(mesh, *solid, spacing);

@@ -24,6 +24,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/MLS_projection/interpolate_attributes.h>
+#include <CGAL/MLS_projection/mls_project_point_set.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #endif // CGAL_MLS_PROJECTION_H

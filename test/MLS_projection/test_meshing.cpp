@@ -54,7 +54,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using Levin = CGAL::MLS::Levin_projection<K>;
 using Function = CGAL::MLS::MLS_implicit_function<Levin>;
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Options = CGAL::MLS::Meshing_options;
+using Mesher = CGAL::MLS::Mesher;
+using Levin_tag = CGAL::MLS::Levin_operator_tag<CGAL::MLS::Polynomial_function_space<3>>;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -139,12 +140,9 @@ void check_closed_mesh(const Mesh_check& c, long euler, double bound) {
   MLS_CHECK_LE(c.max_error, bound);
 }
 
-Options levin_options(Options::Mesher mesher = Options::Mesher::MESH_3) {
-  Options o;
-  o.projection_operator = Options::Operator::LEVIN;
-  o.space = Options::Space::QUADRATIC;
-  o.mesher = mesher;
-  return o;
+// Levin's operator with a quadratic and `mesher`.
+auto levin(Mesher mesher = Mesher::MESH_3) {
+  return CGAL::MLS::parameters::projection_operator(Levin_tag()).mesher(mesher);
 }
 
 // The bandwidth the operators derive on these inputs (mean distance to the 16th neighbour).
@@ -165,9 +163,7 @@ MLS_TEST(sphere_mesh3_closed_manifold_accurate) {
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
   CGAL::MLS::Meshing_report report;
-  Options o = levin_options();
-  o.report = &report;
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, o));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin().report(report)));
   const Mesh_check c = check_mesh(m, sphere_distance);
   print("sphere, Mesh_3", c, seconds_since(t0), h);
   std::cout << "    report: spacing " << report.average_spacing << ", h " << report.bandwidth << ", seeds " << report.seeds
@@ -188,7 +184,7 @@ MLS_TEST(sphere_surface_mesher_closed_manifold_accurate) {
   const double h = derived_h(p);
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin_options(Options::Mesher::SURFACE_MESHER)));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin(Mesher::SURFACE_MESHER)));
   const Mesh_check c = check_mesh(m, sphere_distance);
   print("sphere, Surface_mesher", c, seconds_since(t0), h);
   check_closed_mesh(c, 2, 0.02 * h);
@@ -202,7 +198,7 @@ MLS_TEST(torus_mesh3_closed_manifold_accurate) {
   const double h = derived_h(p);
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin_options()));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(p, m, levin()));
   const Mesh_check c = check_mesh(m, torus_distance);
   print("torus, Mesh_3", c, seconds_since(t0), h);
   check_closed_mesh(c, 0, 0.05 * h);
@@ -217,9 +213,7 @@ MLS_TEST(sphere_parallel_mesh3_valid) {
   const double h = derived_h(p);
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  Options o = levin_options();
-  o.parallel_mesher = true;
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_tag>(p, m, o));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_tag>(p, m, levin().parallel_mesher(true)));
   const Mesh_check c = check_mesh(m, sphere_distance);
   print("sphere, parallel Mesh_3", c, seconds_since(t0), h);
   check_closed_mesh(c, 2, 0.02 * h);
@@ -236,8 +230,8 @@ struct Mesh_dump {
 };
 
 /// mls_surface_reconstruction with `tag` and at most `threads` TBB threads.
-template <class Tag>
-Mesh_dump mesh_with_threads(const std::vector<Point>& p, const Options& options, int threads) {
+template <class Tag, class NamedParameters>
+Mesh_dump mesh_with_threads(const std::vector<Point>& p, const NamedParameters& options, int threads) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
   Mesh m;
   MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<Tag>(p, m, options));
@@ -255,7 +249,7 @@ Mesh_dump mesh_with_threads(const std::vector<Point>& p, const Options& options,
 // with Parallel_tag on 1 and 2 threads, and across runs.
 MLS_TEST(meshing_determinism_threads) {
   const auto p = sphere_points(1500);
-  const Options o = levin_options();
+  const auto o = levin();
   const auto t0 = std::chrono::steady_clock::now();
   const Mesh_dump sequential = mesh_with_threads<CGAL::Sequential_tag>(p, o, 2);
   const Mesh_dump one = mesh_with_threads<CGAL::Parallel_tag>(p, o, 1);
@@ -475,10 +469,8 @@ MLS_TEST(coplanar_points_fail_fast) {
     for(int j = 0; j < 20; ++j) p.emplace_back(0.05 * i + 0.01 * (j % 3), 0.05 * j, 0.);
   Mesh m;
   CGAL::MLS::Meshing_report report;
-  Options o = levin_options();
-  o.report = &report;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, o));
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, levin().report(report)));
   const double seconds = seconds_since(t0);
   std::cout << "  400 coplanar points: '" << report.failure << "' after " << seconds << " s" << std::endl;
   MLS_CHECK(num_faces(m) == 0);
@@ -515,7 +507,7 @@ MLS_TEST(two_components_oriented_and_meshed) {
   MLS_CHECK_LE(r.oriented_by_fallback, 3u);
   Mesh m;
   std::vector<Point> spheres(p.begin(), p.begin() + 3000);
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(spheres, m, levin_options()));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(spheres, m, levin()));
   const Mesh_check c = check_mesh(m, [&](const Point& q) {
     return (std::min)(std::abs(sphere_distance(q)), std::abs(sphere_distance(q - shift)));
   });
@@ -709,7 +701,7 @@ MLS_TEST(builtin_solid_default_mesh) {
   for(std::size_t i = 0; i < cloud.size(); ++i)
     items.emplace_back(Point(cloud.points[i][0], cloud.points[i][1], cloud.points[i][2]),
                        Vector(cloud.normals[i][0], cloud.normals[i][1], cloud.normals[i][2]));
-  const auto np = CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Item>())
+  const auto np = CGAL::MLS::parameters::point_map(CGAL::First_of_pair_property_map<Item>())
                     .normal_map(CGAL::Second_of_pair_property_map<Item>());
   const auto distance = [&](const Point& q) { return solid.signed_distance({q.x(), q.y(), q.z()}); };
 
@@ -767,12 +759,10 @@ MLS_TEST(builtin_solid_default_mesh) {
   MLS_CHECK(std::abs(length - creases.length) <= 0.05 * creases.length);
 
   // the mesh
-  Options options;
   CGAL::MLS::Meshing_report report;
-  options.report = &report;
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(items, m, options, np));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(items, m, np.report(report)));
   const Mesh_check c = check_mesh(m, distance);
   print("built-in solid, defaults", c, seconds_since(t0), h);
   std::cout << "  " << report.feature_polylines << " feature polylines, " << report.corners << " corners" << std::endl;
@@ -796,12 +786,11 @@ MLS_TEST(outliers_removed_builtin_solid) {
   CGAL::Random random(5);
   for(std::size_t i = 0; i < samples / 20; ++i)
     points.emplace_back(random.get_double(-1.1, 1.1), random.get_double(-0.66, 0.66), random.get_double(-0.44, 0.44));
-  Options options;
   CGAL::MLS::Meshing_report report;
-  options.report = &report;
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, m, options));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, m,
+                                                                                   CGAL::MLS::parameters::report(report)));
   const Mesh_check c =
     check_mesh(m, [&](const Point& q) { return solid.signed_distance({q.x(), q.y(), q.z()}); });
   print("built-in solid with 5% outliers", c, seconds_since(t0), report.bandwidth);
@@ -826,13 +815,11 @@ MLS_TEST(open_scan_meshed_where_the_data_is) {
   std::vector<Point> points;
   for(const auto& p : cloud.points)
     if(p[2] < cut) points.emplace_back(p[0], p[1], p[2]);
-  Options options;
-  options.open_surface = true;
   CGAL::MLS::Meshing_report report;
-  options.report = &report;
   Mesh m;
   const auto t0 = std::chrono::steady_clock::now();
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, m, options));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(
+    points, m, CGAL::MLS::parameters::open_surface(true).report(report)));
   const Mesh_check c = check_mesh(m, [&](const Point& q) { return solid.signed_distance({q.x(), q.y(), q.z()}); });
   print("open scan of the built-in solid", c, seconds_since(t0), report.bandwidth);
   double highest = -std::numeric_limits<double>::infinity();
@@ -1105,7 +1092,7 @@ MLS_TEST(slowed_down_mesher_stalls) {
 MLS_TEST(cancellation) {
   const auto p = sphere_points(2000);
   for(const double at : {0.3, 0.7}) {
-    for(const auto mesher : {Options::Mesher::MESH_3, Options::Mesher::SURFACE_MESHER}) {
+    for(const auto mesher : {Mesher::MESH_3, Mesher::SURFACE_MESHER}) {
       Mesh m;
       double last = 0;
       bool monotone = true;
@@ -1114,7 +1101,7 @@ MLS_TEST(cancellation) {
         last = f;
         return f < at;
       };
-      const bool ok = CGAL::MLS::mls_surface_reconstruction(p, m, levin_options(mesher), CGAL::parameters::callback(cb));
+      const bool ok = CGAL::MLS::mls_surface_reconstruction(p, m, levin(mesher).callback(cb));
       MLS_CHECK(!ok);
       MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
       MLS_CHECK(monotone);
@@ -1125,27 +1112,28 @@ MLS_TEST(cancellation) {
   Mesh m;
   double last = 0;
   MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(
-    p, m, levin_options(), CGAL::parameters::callback(std::function<bool(double)>([&](double f) { last = f; return true; }))));
+    p, m, levin().callback(std::function<bool(double)>([&](double f) { last = f; return true; }))));
   MLS_CHECK_NEAR(last, 1., 1e-12);
 }
 
 // The evaluation and time limits stop both meshers: false, the reason, an empty mesh.
 MLS_TEST(evaluation_and_time_limits) {
   const auto p = sphere_points(2000);
-  for(const auto mesher : {Options::Mesher::MESH_3, Options::Mesher::SURFACE_MESHER}) {
+  for(const auto mesher : {Mesher::MESH_3, Mesher::SURFACE_MESHER}) {
     Mesh m;
     CGAL::MLS::Meshing_report report;
-    Options o = levin_options(mesher);
-    o.max_evaluations = 5000;
-    o.report = &report;
-    MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, o));
+    // the evaluation limit is an internal constant (0: 100 times the expected number)
+    CGAL::MLS::internal::Reconstruction_settings s;
+    s.mesher = mesher;
+    s.max_evaluations = 5000;
+    s.report = &report;
+    MLS_CHECK(!CGAL::MLS::internal::reconstruct_surface<CGAL::Sequential_tag>(p, m, s, Levin_tag(),
+                                                                               CGAL::parameters::default_values()));
     MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
     MLS_CHECK(std::string(report.failure).find("evaluation limit") != std::string::npos);
     MLS_CHECK(report.max_evaluations == 5000 && report.evaluations > 5000);
     // a microsecond: the watchdog fires before the mesher ends (about 0.3 s here)
-    o.max_evaluations = 0;
-    o.max_meshing_seconds = 1e-6;
-    MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, o));
+    MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(p, m, levin(mesher).maximum_running_time(1e-6).report(report)));
     MLS_CHECK(num_vertices(m) == 0 && num_faces(m) == 0);
     MLS_CHECK(std::string(report.failure).find("time limit") != std::string::npos);
   }
@@ -1228,13 +1216,13 @@ MLS_TEST(attributes_box_faces_keep_their_colours) {
     Mesh mesh;
     auto colours = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:colour").first;
     CGAL::MLS::Meshing_report report;
-    Options options;
-    options.report = &report;
-    const auto np = CGAL::MLS::parameters::vertex_attribute_map(
-      colours, CGAL::MLS::parameters::attribute_map(boost::make_function_property_map<Coloured_point>(
-                                                      [](const Coloured_point& c) { return c.colour; }))
-                 .point_map(boost::make_function_property_map<Coloured_point>([](const Coloured_point& c) { return c.point; })));
-    MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, mesh, options, np));
+    const auto np =
+      CGAL::MLS::parameters::attribute_map(
+        boost::make_function_property_map<Coloured_point>([](const Coloured_point& c) { return c.colour; }))
+        .vertex_attribute_map(colours)
+        .report(report)
+        .point_map(boost::make_function_property_map<Coloured_point>([](const Coloured_point& c) { return c.point; }));
+    MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(points, mesh, np));
     MLS_CHECK(CGAL::is_closed(mesh));
     std::vector<Point> positions;
     std::vector<Mesh::Vertex_index> vs;
@@ -1269,13 +1257,12 @@ MLS_TEST(attributes_sphere_ramp) {
   Mesh mesh;
   auto values = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:values").first;
   CGAL::MLS::Meshing_report report;
-  Options options = levin_options();
-  options.report = &report;
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(
-    points, mesh, options,
-    CGAL::MLS::parameters::vertex_attribute_map(
-      values, CGAL::MLS::parameters::attribute_map(CGAL::Second_of_pair_property_map<Item>())
-                .point_map(CGAL::First_of_pair_property_map<Item>()))));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(points, mesh,
+                                                  levin()
+                                                    .report(report)
+                                                    .attribute_map(CGAL::Second_of_pair_property_map<Item>())
+                                                    .vertex_attribute_map(values)
+                                                    .point_map(CGAL::First_of_pair_property_map<Item>())));
   double worst = 0, worst_constant = 0;
   for(auto v : mesh.vertices()) {
     worst = (std::max)(worst, std::abs(values[v][0] - mesh.point(v).z()));
@@ -1331,13 +1318,12 @@ MLS_TEST(attributes_of_different_sizes) {
   Mesh mesh;
   auto values = mesh.add_property_map<Mesh::Vertex_index, std::vector<double>>("v:values").first;
   CGAL::MLS::Meshing_report report;
-  Options options = levin_options();
-  options.report = &report;
-  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(
-    points, mesh, options,
-    CGAL::MLS::parameters::vertex_attribute_map(
-      values, CGAL::MLS::parameters::attribute_map(CGAL::Second_of_pair_property_map<Item>())
-                .point_map(CGAL::First_of_pair_property_map<Item>()))));
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(points, mesh,
+                                                  levin()
+                                                    .report(report)
+                                                    .attribute_map(CGAL::Second_of_pair_property_map<Item>())
+                                                    .vertex_attribute_map(values)
+                                                    .point_map(CGAL::First_of_pair_property_map<Item>())));
   std::cout << "  " << report.failure << std::endl;
   MLS_CHECK(std::string(report.failure).find("channels") != std::string::npos);
 }
@@ -1352,22 +1338,18 @@ MLS_TEST(bad_input) {
   std::vector<Point> line;
   for(int i = 0; i < 200; ++i) line.emplace_back(0.01 * i, 0, 0); // collinear: no surface
   CGAL::MLS::Meshing_report report;
-  Options o = levin_options();
-  o.report = &report;
-  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(line, m, o));
+  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(line, m, levin().report(report)));
   MLS_CHECK(num_faces(m) == 0);
   std::cout << "  collinear points: " << report.failure << std::endl;
   MLS_CHECK(!std::string(report.failure).empty());
-  Options wrong = levin_options();
-  wrong.space = Options::Space::MIXED; // Levin's operator fits graphs only
-  MLS_CHECK(!CGAL::MLS::mls_surface_reconstruction(sphere_points(500), m, wrong));
   // NaN points among good ones, with normals given through a normal map
   std::vector<std::pair<Point, Vector>> pwn;
   for(const Point& q : sphere_points(2000)) pwn.emplace_back(q, q - CGAL::ORIGIN);
   pwn.emplace_back(Point(nan, 0, 0), Vector(0, 0, 1));
   pwn.emplace_back(Point(0, std::numeric_limits<double>::infinity(), 0), Vector(0, 0, 1));
-  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(pwn, m, levin_options(),
-                                                  CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, Vector>>())
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction(pwn, m,
+                                                  levin()
+                                                    .point_map(CGAL::First_of_pair_property_map<std::pair<Point, Vector>>())
                                                     .normal_map(CGAL::Second_of_pair_property_map<std::pair<Point, Vector>>())));
   const Mesh_check c = check_mesh(m, sphere_distance);
   check_closed_mesh(c, 2, 0.02 * derived_h(sphere_points(2000)));

@@ -14,6 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
@@ -21,11 +22,13 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Quadratic_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/mls_project_point_set.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <utility>
 #include <vector>
@@ -339,6 +342,57 @@ double cube_distance(const V3& p) {
 }
 
 } // namespace
+
+// mls_project_point_set(): the points and normals of a set projected in place, with the default
+// operator (Mixed_projection) on the set itself. The cube sampled at 0.05 with its points moved by
+// +-0.01 (a fifth of the spacing, alternating) along the face normals, each point's normal
+// given as its outward direction from the centre: every point is projected, to the results of
+// project_points() with Mixed_projection on the same samples, bit for bit; the noise is smoothed:
+// the RMS distance to the cube falls below 0.7 times its value (measured 0.0098 to 0.0055: the
+// quadratic of weights of width h, about 2 spacings, follows a part of the checkerboard, the
+// bump centred on the query; Levin's quadratic, far from the edges, leaves the same 0.58, and near
+// the edges, where it rounds them, 0.0099); the normals are unit and outward. A cancelling
+// callback leaves the set as it was.
+MLS_TEST(mls_project_point_set_in_place) {
+  using Item = std::pair<Epick::Point_3, Epick::Vector_3>;
+  std::vector<Item> items;
+  int k = 0;
+  for(const auto& p : cube(0.05)) {
+    const V3 q = eig(p), n = q.normalized();
+    const V3 face = q.cwiseAbs().maxCoeff() == std::abs(q[0]) ? V3(q[0] > 0 ? 1 : -1, 0, 0)
+                    : q.cwiseAbs().maxCoeff() == std::abs(q[1]) ? V3(0, q[1] > 0 ? 1 : -1, 0)
+                                                                 : V3(0, 0, q[2] > 0 ? 1 : -1);
+    const V3 moved = q + (k++ % 2 ? 0.01 : -0.01) * face;
+    items.emplace_back(Epick::Point_3(moved[0], moved[1], moved[2]), Epick::Vector_3(n[0], n[1], n[2]));
+  }
+  const auto np = MLS::parameters::point_map(CGAL::First_of_pair_property_map<Item>())
+                    .normal_map(CGAL::Second_of_pair_property_map<Item>());
+  const auto rms = [](const std::vector<Item>& set) {
+    double s2 = 0;
+    for(const Item& i : set) s2 += std::pow(cube_distance(eig(i.first)), 2);
+    return std::sqrt(s2 / double(set.size()));
+  };
+  const MLS::Mixed_projection<Epick, 3> PM(items, MLS::Projection_options(), np);
+  std::vector<MLS::Projection_result<Epick, 3>> expected;
+  MLS::project_points<CGAL::Sequential_tag>(PM, items, std::back_inserter(expected), np);
+
+  std::vector<Item> cancelled = items;
+  MLS_CHECK(MLS::mls_project_point_set<CGAL::Parallel_if_available_tag>(
+              cancelled, np.callback(std::function<bool(double)>([](double) { return false; }))) == 0);
+  MLS_CHECK(cancelled == items);
+
+  std::vector<Item> projected = items;
+  MLS_CHECK(MLS::mls_project_point_set<CGAL::Parallel_if_available_tag>(projected, np) == items.size());
+  std::size_t differ = 0, inward = 0;
+  for(std::size_t i = 0; i < items.size(); ++i) {
+    if(projected[i].first != expected[i].point || projected[i].second != expected[i].normal) ++differ;
+    if(!(std::abs(eig(projected[i].second).norm() - 1) < 1e-12 && eig(projected[i].second).dot(eig(items[i].first)) > 0)) ++inward;
+  }
+  std::cout << "  in place: RMS distance to the cube " << rms(items) << " -> " << rms(projected) << std::endl;
+  MLS_CHECK_MSG(differ == 0, std::to_string(differ) + " points differ from project_points");
+  MLS_CHECK(inward == 0);
+  MLS_CHECK_LE(rms(projected), 0.7 * rms(items));
+}
 
 MLS_TEST(cube_corner_and_edges_are_reproduced_exactly) {
   const auto pts = cube(0.025);

@@ -7,7 +7,7 @@
 #include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
-#include <CGAL/MLS_projection/Meshing_options.h>
+#include <CGAL/MLS_projection/Implicit_function_options.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>

@@ -3,19 +3,19 @@
 //
 // The interface between the command line of mls_mesh (tools/mls_mesh.cpp) and the translation
 // unit calling CGAL::MLS::mls_surface_reconstruction() (tools/mls_mesh_reconstruct.cpp), which
-// instantiates every operator, function space and mesher. One unit for inputs with and without
-// normals: the two calls share those instantiations (as two units, each would compile all of
-// them).
+// instantiates it for every operator and function space, with and without normals.
 
 #ifndef MLS_TOOLS_MESH_JOB_H
 #define MLS_TOOLS_MESH_JOB_H
 
-#include <CGAL/MLS_projection/Meshing_options.h>
+#include <CGAL/MLS_projection/Meshing_report.h>
+#include <CGAL/MLS_projection/parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <cstddef>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -37,11 +37,26 @@ struct Mesh_input {
 /// attributes, written by the reconstruction when the input has attributes.
 constexpr const char* vertex_attributes_property = "v:attributes";
 
+/// The projection operators of `--operator` and `--space`.
+enum class Operator_choice { LEVIN_PLANE, LEVIN_QUADRATIC, UNIFIED_PLANE, UNIFIED_QUADRATIC, UNIFIED_WEDGE, MIXED };
+
+/// The named parameters of mls_surface_reconstruction() that the tool sets (lengths and times:
+/// 0 for the library's default).
+struct Mesh_settings {
+  Operator_choice projection_operator = Operator_choice::MIXED;
+  CGAL::MLS::Mesher mesher = CGAL::MLS::Mesher::MESH_3;
+  bool features = true, remove_outliers = true, open_surface = false, parallel_mesher = false;
+  double facet_size = 0, facet_distance = 0, bandwidth = 0, time_limit = 0;
+  std::function<bool(double)> callback;
+};
+
 /// mls_surface_reconstruction<Parallel_if_available_tag> of the points with their normals.
-bool reconstruct_with_normals(const Mesh_input& input, Mesh& mesh, const CGAL::MLS::Meshing_options& options);
+bool reconstruct_with_normals(const Mesh_input& input, Mesh& mesh, const Mesh_settings& settings,
+                              CGAL::MLS::Meshing_report& report);
 /// The same, the normals (the pairs' second members) ignored: estimated and oriented by the
 /// function.
-bool reconstruct_without_normals(const Mesh_input& input, Mesh& mesh, const CGAL::MLS::Meshing_options& options);
+bool reconstruct_without_normals(const Mesh_input& input, Mesh& mesh, const Mesh_settings& settings,
+                                 CGAL::MLS::Meshing_report& report);
 
 } // namespace mls_tools
 

@@ -29,14 +29,16 @@ struct Attribute_span {
   const double* end() const { return last; }
 };
 
-/// Writes to `map` the attributes of every vertex of `mesh`, interpolated on the local fit of the
-/// nearest of the projected `seeds` (results of `projection`; see `interpolate_attributes()`):
-/// the fit that placed the surface there.
-template <class ConcurrencyTag, class Projection, class PolygonMesh, class VertexAttributeMap>
-void interpolate_vertex_attributes(const Projection& projection, const std::vector<typename Projection::Result>& seeds,
-                                   const PolygonMesh& mesh, VertexAttributeMap map) {
+/// The attributes of every vertex of `mesh`, in the order of `vertices(mesh)`, interpolated on the
+/// local fit of the nearest of the projected `seeds` (results of `projection`; see
+/// `interpolate_attributes()`): the fit that placed the surface there. Empty when the samples
+/// have no attribute.
+template <class ConcurrencyTag, class Projection, class PolygonMesh>
+std::vector<std::vector<double>> interpolate_vertex_attributes(const Projection& projection,
+                                                               const std::vector<typename Projection::Result>& seeds,
+                                                               const PolygonMesh& mesh) {
   const auto& samples = projection.samples();
-  if(samples.number_of_attributes() == 0 || seeds.empty()) return;
+  if(samples.number_of_attributes() == 0 || seeds.empty()) return {};
   std::vector<Vec<3>> seed_points(seeds.size());
   for(std::size_t i = 0; i < seeds.size(); ++i) seed_points[i] = samples.to_local(seeds[i].point);
   const Point_tree<3> tree(seed_points);
@@ -53,7 +55,7 @@ void interpolate_vertex_attributes(const Projection& projection, const std::vect
     values[i].reserve(samples.number_of_attributes());
     interpolate_attributes(projection, seeds[found.front().second], x, std::back_inserter(values[i]));
   });
-  for(std::size_t i = 0; i < vs.size(); ++i) put(map, vs[i], std::move(values[i]));
+  return values;
 }
 
 } // namespace internal

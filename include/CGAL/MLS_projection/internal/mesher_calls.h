@@ -161,11 +161,11 @@ struct Recent_values {
 // The report of a mesher stopped by the callback, the evaluation limit or the time limit.
 inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& report) {
   if(monitor.limit_hit.load()) {
-    report.message = "the mesher did not finish within the evaluation limit (Meshing_options::max_evaluations)";
+    report.message = "the mesher did not finish within the evaluation limit";
   } else if(monitor.stall_hit.load()) {
     report.message = "the mesher stalled (Mesh_3 slowed down to less than a tenth of its pace)";
   } else if(monitor.time_hit.load()) {
-    report.message = "the mesher did not finish within the time limit (Meshing_options::max_meshing_seconds)";
+    report.message = "the mesher did not finish within the time limit (maximum_running_time)";
   } else {
     report.cancelled = true;
     report.message = "cancelled";

@@ -1,0 +1,73 @@
+// Copyright (c) 2026 The CGAL MLS_projection authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_MLS_PROJECTION_IMPLICIT_FUNCTION_OPTIONS_H
+#define CGAL_MLS_PROJECTION_IMPLICIT_FUNCTION_OPTIONS_H
+
+namespace CGAL {
+namespace MLS {
+
+/// \ingroup PkgMLSProjectionRef
+/// How `MLS_implicit_function` evaluates \f$f(x)\f$.
+enum class Implicit_function_mode {
+  /// Blend the signed distances of \f$x\f$ to the local fits of the nearest seeds (projected
+  /// once, at construction) with a partition of unity: some microseconds per evaluation, the
+  /// default for meshing (see the manual's section "Meshing").
+  LOCAL_FITS,
+  /// Project \f$x\f$ at every evaluation: \f$f(x) = \pm|x - P(x)|\f$. The reference; as slow as
+  /// the projection operator (0.5 ms to 0.2 s per evaluation).
+  EXACT
+};
+
+/// \ingroup PkgMLSProjectionRef
+/// The knobs of `MLS_implicit_function`. Lengths are in units of the bandwidth \f$h\f$ of the
+/// projection operator.
+struct Implicit_function_options {
+  /// The evaluation mode.
+  Implicit_function_mode mode = Implicit_function_mode::LOCAL_FITS;
+  /// The seeds are the input samples thinned on a grid of this cell size (units of \f$h\f$):
+  /// one seed per occupied cell. 0: every input sample is a seed.
+  double seed_spacing = 0.5;
+  /// The number of nearest seeds blended by the partition of unity (clamped to [2, 63]).
+  int blend_neighbors = 8;
+  /// Beyond this distance from the nearest seed (units of \f$h\f$), the value is blended
+  /// towards the far value (distance to the nearest seed, signed by its local fit near the
+  /// seed)...
+  double far_start = 1.;
+  /// ... which it reaches at this distance (units of \f$h\f$). The local fits are the
+  /// surface within about \f$h\f$ of their data; further out, a wedge fan's sign is less reliable
+  /// than the far value's (measured on the built-in solid, 11810 points, with the check of the fits
+  /// at its earlier tolerance of 2%: of 112762 points of a grid of step h/2 at least h/2 off the
+  /// surface, 1 had the wrong sign with 1 and 2, 4 with 1.5 and 3).
+  double far_end = 2.;
+  /// With an operator that finds creases (the wedge fan, alone or mixed): project every seed with
+  /// Levin's operator first and hand only the seeds its quadratic cannot fit (near creases and
+  /// corners) to the operator (see `MLS_implicit_function`, "Screening by P_L"). `false`: the
+  /// operator projects every seed (10 to 200 ms each).
+  bool levin_screening = true;
+  /// The screening keeps P_L's fit when its weighted RMS residual is at most this (units of
+  /// \f$h\f$)...
+  double screening_residual = 0.01;
+  /// ... or at most this factor times the estimated RMS of the noise (see
+  /// `Mixed_projection::noise_variance()`; the default is the mixed operator's margin,
+  /// \f$\sqrt{2.5}\f$, so that a seed gets the fit the mixed operator would give it).
+  double screening_noise_factor = 1.58;
+  /// Where the operator's fit of a seed is not blended (see `MLS_implicit_function`, "Seeds"),
+  /// P_L's fit of the seed is blended in its place when its weighted RMS residual is at most this
+  /// factor times the estimated RMS of the noise (about 0 without noise, so that no crease is
+  /// rounded by a quadratic), and it passes the same test. 0: never.
+  double fallback_noise_factor = 3.;
+  /// The number of neighbours of the normal estimation and orientation (when the samples carry
+  /// no normals): `pca_estimate_normals` and the orientation's neighbour graph.
+  int normal_neighbors = 18;
+  /// Project seeds into the gaps of the sampling (holes of a scan up to about \f$4h\f$ across),
+  /// so that the local fits make the surface there (see `MLS_implicit_function`, "Gaps").
+  /// `mls_surface_reconstruction()` turns it off for an open surface, which ends where its
+  /// samples end.
+  bool complete_gaps = true;
+};
+
+} // namespace MLS
+} // namespace CGAL
+
+#endif // CGAL_MLS_PROJECTION_IMPLICIT_FUNCTION_OPTIONS_H
