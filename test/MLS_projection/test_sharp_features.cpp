@@ -208,6 +208,16 @@ MLS_TEST(noiseless_cube_mixed_gives_12_edges_and_8_corners) {
   const Cube_run run = run_cube<MLS::Mixed_projection<Epick, 3>>(0., 1, 8);
   print("noiseless cube", run.features, run.h, run.seconds);
   check_cube(run, 1e-6, 1e-6, 1e-6);
+  // the named parameter sharpness_angle: above 90 degrees, no fan fit of the cube (whose faces
+  // meet at 90) makes a crease for the helper points, and the crease samples alone make no
+  // polyline (measured: 9 helpers projected instead of 97)
+  const auto pts = cube(0.0625, 0., 1);
+  const MLS::Mixed_projection<Epick, 3> P(pts, wendland());
+  const Features blunt = MLS::detect_sharp_features<CGAL::Parallel_if_available_tag>(
+    P, project(P, subsample(pts, 8)), CGAL::parameters::sharpness_angle(100.));
+  std::cout << "  sharpness_angle 100: " << blunt.statistics.helper_queries << " helpers projected (20: "
+            << run.features.statistics.helper_queries << "), " << blunt.polylines.size() << " polylines\n";
+  MLS_CHECK(blunt.polylines.empty() && blunt.statistics.helper_queries < run.features.statistics.helper_queries);
 }
 
 // Noise of deviation sigma = 0.01 (a sixth of the spacing, 0.07 h) on every coordinate. The
@@ -326,7 +336,7 @@ MLS_TEST(chaining_finds_a_junction_corner_without_apex) {
   }
 }
 
-// The separation test behind `Feature_options::minimum_separation` (units of h = 1): two
+// The separation test behind `internal::Feature_settings::minimum_separation` (units of h = 1): two
 // creases meeting at a corner at 90 degrees are not too close (their vertices near the shared
 // corner do not count), but they are when the corner is not shared; a parallel polyline 0.3
 // away is too close for a separation of 0.5 and not for 0.25, and so is a short segment running

@@ -6,9 +6,11 @@
 
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
+#include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/internal/polyline_chaining.h>
 #include <CGAL/MLS_projection/project_points.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
@@ -50,11 +52,13 @@ struct Sharp_features {
   } statistics; ///< what the detection did
 };
 
-/// \ingroup PkgMLSProjectionRef
-/// The knobs of `detect_sharp_features()`. Lengths are in units of the bandwidth \f$h\f$ of the
+namespace internal {
+
+/// The constants of `detect_sharp_features()`, two of which are its named parameters
+/// (`bandwidth`, `minimum_crease_angle`). Lengths are in units of the bandwidth \f$h\f$ of the
 /// projection (`bandwidth` overrides it), angles in degrees. The user manual's section
 /// "Sharp Features" explains each step they control.
-struct Feature_options {
+struct Feature_settings {
   /// The length unit \f$h\f$; 0 (default): the projection's `bandwidth()`.
   double bandwidth = 0;
   /// Crease points closer than this (and with directions within `link_angle`) are merged
@@ -112,8 +116,6 @@ struct Feature_options {
   /// polylines nearly touching, e.g. two fragments of a strongly curved crease found side by side.
   double minimum_separation = 0.5;
 };
-
-namespace internal {
 
 template <class Space> struct is_wedge_fan_3 : std::false_type {};
 template <int N> struct is_wedge_fan_3<Wedge_fan_function_space<3, N>> : std::true_type {
@@ -196,7 +198,7 @@ bool fan_creases(const Projection_result<GeomTraits, 3>& r, double min_angle, Fa
 /// Finds the sharp creases and corners of the MLS surface of `projection` as polylines and
 /// points, ready for Mesh_3's `add_features()`.
 ///
-/// The algorithm (user manual, section "Sharp Features"):
+/// The algorithm (user manual, section "Sharp Features", which gives the constants named here):
 /// 1. the projected samples on a crease (`is_on_feature` with a direction) or an apex (a null
 ///    direction) are collected;
 /// 2. near the creases and apices of the samples' wedge-fan fits, helper points are placed
@@ -221,11 +223,32 @@ bool fan_creases(const Projection_result<GeomTraits, 3>& r, double min_angle, Fa
 /// \param projection the operator whose MLS surface is analysed
 /// \param projected_samples the projections by `projection` of the input samples, or of a
 ///        subsample of them (order matters for ties only, never for validity)
-/// \param options the knobs, in units of \f$h\f$
-template <class ConcurrencyTag, class Projection, class GeomTraits>
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{neighbor_radius}
+///     \cgalParamDescription{the length unit \f$h\f$ of the detection's radii and spacings (see
+///       the manual)}
+///     \cgalParamDefault{the projection's `bandwidth()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sharpness_angle}
+///     \cgalParamDescription{the smallest angle, in degrees, between the normals of two faces of a
+///       fan fit that makes a crease for the helper points (below it, the fan fits a fold into
+///       noise on a flat region)}
+///     \cgalParamDefault{20}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class ConcurrencyTag, class Projection, class GeomTraits,
+          class NamedParameters = parameters::Default_named_parameters>
 Sharp_features<GeomTraits> detect_sharp_features(const Projection& projection,
                                                  const std::vector<Projection_result<GeomTraits, 3>>& projected_samples,
-                                                 const Feature_options& options = Feature_options()) {
+                                                 const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  internal::Feature_settings options;
+  options.bandwidth = choose_parameter(get_parameter(np, internal_np::neighbor_radius), options.bandwidth);
+  options.minimum_crease_angle =
+    choose_parameter(get_parameter(np, internal_np::sharpness_angle), options.minimum_crease_angle);
   using KT = internal::Kernel_types<GeomTraits, 3>;
   using V = internal::Feature_vec;
   using Point = typename GeomTraits::Point_3;

@@ -45,7 +45,7 @@ namespace MLS {
 namespace internal {
 
 /// The sharp-feature polylines (and the number of corners) to protect when meshing `function`:
-/// `detect_sharp_features()` (default `Feature_options`) with the operator that projected the
+/// `detect_sharp_features()` (its defaults) with the operator that projected the
 /// seeds (screened by P_L, see `MLS_implicit_function`) on the seeds' results (project once, use
 /// twice), for the operators that find creases; none for the others. `queries`: the helper and
 /// relaxation points projected.
