@@ -80,7 +80,6 @@ std::size_t mls_project_point_set(PointRange& points, const NamedParameters& np 
   using parameters::get_parameter;
   using NP_helper = Point_set_processing_3_np_helper<PointRange, NamedParameters>;
   using K = typename NP_helper::Geom_traits;
-  using Point_3 = typename K::Point_3;
   constexpr bool has_normals = NP_helper::has_normal_map();
 
   Projection_options options;
@@ -90,15 +89,13 @@ std::size_t mls_project_point_set(PointRange& points, const NamedParameters& np 
     std::make_shared<const Sample_set<K, 3>>(points, np), options);
 
   const auto point_map = NP_helper::get_point_map(points, np);
-  std::vector<Point_3> queries;
-  queries.reserve(points.size());
-  for(const auto& v : points) queries.push_back(get(point_map, v));
   using Result = typename std::decay_t<decltype(projection)>::Result;
   std::vector<Result> results;
-  results.reserve(queries.size());
+  results.reserve(points.size());
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
-  if(!project_points<ConcurrencyTag>(projection, queries, std::back_inserter(results), parameters::callback(callback)))
+  if(!project_points<ConcurrencyTag>(projection, points, std::back_inserter(results),
+                                     parameters::point_map(point_map).callback(callback)))
     return 0;
 
   std::size_t projected = 0, i = 0;

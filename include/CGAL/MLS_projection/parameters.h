@@ -133,13 +133,6 @@ auto attribute_map(const AttributeMap& map) {
   return begin().attribute_map(map);
 }
 
-/// `np` with the attribute map `map` appended (for a chain of CGAL's own names).
-template <class AttributeMap, class T, class Tag, class Base>
-CGAL::Named_function_parameters<AttributeMap, internal_np::mls_attribute_map_t, CGAL::Named_function_parameters<T, Tag, Base>>
-attribute_map(const AttributeMap& map, const CGAL::Named_function_parameters<T, Tag, Base>& np) {
-  return {map, np};
-}
-
 /// \ingroup PkgMLSProjectionFunctions
 /// The named parameter through which `mls_surface_reconstruction()` writes the attributes of
 /// the output mesh's vertices: a `WritablePropertyMap` from the mesh's `vertex_descriptor` to
