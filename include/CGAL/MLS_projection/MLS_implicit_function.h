@@ -396,7 +396,8 @@ public:
   Point_3 get_inner_point() const { return data_->inner_point; }
 
   /// The results of the seed projections, in world coordinates, their normals oriented as the
-  /// function's (outward). Failed projections are left out; the unblended seeds are in.
+  /// function's (outward): where P_L's fit is blended in place of the operator's (see "Seeds"),
+  /// P_L's result. Failed projections are left out; the unblended seeds are in.
   const std::vector<Result>& projected_seeds() const { return data_->projected; }
 
   /// The projection operator.
@@ -720,12 +721,16 @@ private:
       }
       V Pg, ng;
       if(j < levin_results.size() && levin_results[j].is_success() && levin_results[j].energy <= d.fallback_threshold &&
-         make_fit(d, levin_results[j], f, Pg, ng) && agrees_with_normals(d, f, Pg, ng))
+         make_fit(d, levin_results[j], f, Pg, ng) && agrees_with_normals(d, f, Pg, ng)) {
         kept[j] = LEVIN;
+        levin_results[j].normal = KT::to_vector(ng);
+      }
     });
     std::size_t m = 0; // the kept fits, moved to the front in place
     for(std::size_t j = 0; j < results.size(); ++j) {
-      if(usable[j]) d.projected.push_back(results[j]);
+      // the result whose fit is blended: the feature detection then finds no crease that f rounds
+      if(kept[j] == LEVIN) d.projected.push_back(levin_results[j]);
+      else if(usable[j]) d.projected.push_back(results[j]);
       if(kept[j] == NONE) {
         ++(usable[j] ? d.unblended : d.failed);
         continue;

@@ -55,8 +55,8 @@ struct Sharp_features {
 namespace internal {
 
 /// The constants of `detect_sharp_features()`, two of which are its named parameters
-/// (`bandwidth`, `minimum_crease_angle`). Lengths are in units of the bandwidth \f$h\f$ of the
-/// projection (`bandwidth` overrides it), angles in degrees. The user manual's section
+/// (`neighbor_radius`, `sharpness_angle`). Lengths are in units of the bandwidth \f$h\f$ of the
+/// projection (`neighbor_radius` overrides it), angles in degrees. The user manual's section
 /// "Sharp Features" explains each step they control.
 struct Feature_settings {
   /// The length unit \f$h\f$; 0 (default): the projection's `bandwidth()`.
