@@ -77,12 +77,11 @@ public:
     out.clear();
     if(nodes_.empty() || k == 0 || !(radius >= 0)) return;
     k = (std::min)(k, points_.size());
-    const double r2 = radius * radius;
-    // `out` is a max-heap on (distance, index) while searching
-    const auto worse = [](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b) { return a < b; };
+    // `out` stays sorted; `bound`: the squared distance beyond which nothing can enter it
+    double bound = radius * radius;
     struct Entry {
       std::uint32_t node;
-      double bound; // squared distance from c to the node's box
+      double distance; // squared distance from c to the node's box
     };
     // the boxes bound the search from far away too (the meshers evaluate points far outside the
     // data), where the distance to a splitting plane alone prunes little
@@ -99,34 +98,35 @@ public:
     stack[top++] = {0, box_distance(nodes_[0])};
     while(top > 0) {
       const Entry e = stack[--top];
-      if(e.bound > r2 || (out.size() == k && e.bound > out.front().first)) continue;
+      if(e.distance > bound) continue;
       const Node& node = nodes_[e.node];
       if(node.dimension < 0) {
         for(std::uint32_t i = node.begin; i < node.end; ++i) {
-          const std::pair<double, std::size_t> candidate((points_[i] - c).squaredNorm(), std::size_t(index_[i]));
-          if(candidate.first > r2) continue;
+          const double d = (points_[i] - c).squaredNorm();
+          if(d > bound) continue;
+          const std::pair<double, std::size_t> candidate(d, std::size_t(index_[i]));
           if(out.size() < k) {
             out.push_back(candidate);
-            std::push_heap(out.begin(), out.end(), worse);
-          } else if(candidate < out.front()) {
-            std::pop_heap(out.begin(), out.end(), worse);
+          } else if(candidate < out.back()) {
             out.back() = candidate;
-            std::push_heap(out.begin(), out.end(), worse);
+          } else {
+            continue;
           }
+          for(std::size_t j = out.size() - 1; j > 0 && out[j] < out[j - 1]; --j) std::swap(out[j], out[j - 1]);
+          if(out.size() == k) bound = out.back().first;
         }
         continue;
       }
       const double left = box_distance(nodes_[node.left]), right = box_distance(nodes_[node.right]);
       // the far side first on the stack, so that the near side is searched first
       if(left <= right) {
-        stack[top++] = {node.right, right};
-        stack[top++] = {node.left, left};
+        if(right <= bound) stack[top++] = {node.right, right};
+        if(left <= bound) stack[top++] = {node.left, left};
       } else {
-        stack[top++] = {node.left, left};
-        stack[top++] = {node.right, right};
+        if(left <= bound) stack[top++] = {node.left, left};
+        if(right <= bound) stack[top++] = {node.right, right};
       }
     }
-    std::sort_heap(out.begin(), out.end(), worse);
   }
 
 private:

@@ -13,9 +13,12 @@
 #include <CGAL/MLS_projection/internal/Point_tree.h>
 #include <CGAL/MLS_projection/internal/outside_votes.h>
 
+#include <CGAL/for_each.h>
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
+
+#include <boost/range/irange.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -161,17 +164,24 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   std::vector<Edge> edges;
   std::vector<double> reach(n); // squared distance to the k-th neighbour
   {
+    // the k nearest of each point (the point itself first), searched once, in parallel
+    const std::size_t kn = (std::min)(std::size_t(k) + 1, n);
+    std::vector<std::uint32_t> near(n * kn), count(n);
     const Point_tree<3> tree(p);
-    std::vector<std::pair<double, std::size_t>> near;
-    for(std::size_t i = 0; i < n; ++i) {
-      tree.k_nearest(p[i], std::size_t(k) + 1, near); // the point itself comes first
-      reach[i] = near.empty() ? 0. : near.back().first;
-    }
+    CGAL::for_each<ConcurrencyTag>(boost::irange<std::size_t>(0, n), [&](std::size_t i) {
+      thread_local std::vector<std::pair<double, std::size_t>> found;
+      tree.k_nearest(p[i], kn, found);
+      for(std::size_t j = 0; j < found.size(); ++j) near[i * kn + j] = std::uint32_t(found[j].second);
+      count[i] = std::uint32_t(found.size());
+      reach[i] = found.empty() ? 0. : found.back().first;
+      return true;
+    });
     if(!step(0.45)) return report;
     edges.reserve(n * k / 2 + n);
     for(std::size_t i = 0; i < n; ++i) {
-      tree.k_nearest(p[i], std::size_t(k) + 1, near);
-      for(const auto& [d2, j] : near) {
+      for(std::size_t c = 0; c < count[i]; ++c) {
+        const std::size_t j = near[i * kn + c];
+        const double d2 = (p[j] - p[i]).squaredNorm(); // as the tree computed it
         // each edge once: from the smaller index when both ends have the other as a neighbour
         if(j == i || !(d2 > 0) || d2 > 4. * (std::min)(reach[i], reach[j]) || (d2 <= reach[j] && j < i)) continue;
         const Vec<3> e = (p[j] - p[i]) / std::sqrt(d2);
