@@ -9,12 +9,19 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/MLS_projection.h>
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
+#include <CGAL/MLS_projection/MLS_mesh_domain_3.h>
 #include <CGAL/MLS_projection/interpolate_attributes.h>
 #include <CGAL/MLS_projection/internal/unsupported_components.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#include <CGAL/make_mesh_3.h>
 #include <CGAL/Random.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -147,6 +154,22 @@ auto levin(Mesher mesher = Mesher::MESH_3) {
 
 // The bandwidth the operators derive on these inputs (mean distance to the 16th neighbour).
 double derived_h(const std::vector<Point>& p) { return Levin(p).bandwidth(); }
+
+// `make_mesh_3` on the package's domain, as a user calls it: facet angle 25 degrees, `size` and
+// `distance`, edge size 0.75 `size`, manifold, only the surface.
+using Domain = CGAL::MLS::MLS_mesh_domain_3<K>;
+using Domain_tr = CGAL::Mesh_triangulation_3<Domain>::type;
+using Domain_c3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Domain_tr, Domain::Corner_index, Domain::Curve_index>;
+Mesh mesh_domain(const Domain& domain, double size, double distance) {
+  namespace params = CGAL::parameters;
+  const CGAL::Mesh_criteria_3<Domain_tr> criteria(params::edge_size = 0.75 * size, params::facet_angle = 25,
+                                                  params::facet_size = size, params::facet_distance = distance);
+  const auto c3t3 = CGAL::make_mesh_3<Domain_c3t3>(domain, criteria, params::no_perturb(), params::no_exude(),
+                                                   params::manifold());
+  Mesh m;
+  CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, m);
+  return m;
+}
 
 } // namespace
 
@@ -476,6 +499,11 @@ MLS_TEST(coplanar_points_fail_fast) {
   MLS_CHECK(num_faces(m) == 0);
   MLS_CHECK(std::string(report.failure).find("not closed") != std::string::npos);
   MLS_CHECK_LE(seconds, 30.);
+  // the public domain of the same function is empty: make_mesh_3 returns no facet
+  const Function f{Levin(p)};
+  const Domain domain(f);
+  MLS_CHECK(f.is_valid() && !domain.is_closed());
+  MLS_CHECK(num_faces(mesh_domain(domain, 0.1, 0.01)) == 0);
 }
 
 // Orientation without normals on two separate spheres and 3 isolated points: each sphere is a tree
@@ -769,6 +797,53 @@ MLS_TEST(builtin_solid_default_mesh) {
   check_closed_mesh(c, 0, 0.25 * h);
   MLS_CHECK(report.feature_polylines >= 11);
   MLS_CHECK_MSG(!report.features_dropped, "the polylines were not protected"); // nor over the budget
+
+  // the same function meshed by a user: its domain, make_mesh_3 with the criteria of the run above
+  const auto t1 = std::chrono::steady_clock::now();
+  const Domain domain(f);
+  const Mesh_check d = check_mesh(mesh_domain(domain, report.facet_size, report.facet_distance), distance);
+  print("built-in solid, MLS_mesh_domain_3", d, seconds_since(t1), h);
+  std::cout << "  " << domain.feature_polylines().size() << " feature polylines, " << domain.number_of_corners()
+            << " corners, " << domain.number_of_off_surface_polylines() << " off the surface" << std::endl;
+  MLS_CHECK(domain.is_closed());
+  check_closed_mesh(d, 0, 0.25 * h);
+  MLS_CHECK(domain.feature_polylines().size() >= 11);
+}
+
+// The main job is generic over kernels: the built-in solid's samples without normals, meshed with
+// the defaults with Simple_cartesian<double> and with Epick, give the same mesh, vertex for vertex
+// (both compute in doubles; the meshers run in Epick in both: Mesh_3's protection of the
+// polylines crashed in Simple_cartesian<double>'s inexact predicates).
+MLS_TEST(simple_cartesian_kernel_same_mesh) {
+  using SC = CGAL::Simple_cartesian<double>;
+  const mls_tools::Point_cloud cloud = mls_tools::builtin_solid_points();
+  std::vector<Point> points;
+  std::vector<SC::Point_3> sc_points;
+  for(const auto& p : cloud.points) {
+    points.emplace_back(p[0], p[1], p[2]);
+    sc_points.emplace_back(p[0], p[1], p[2]);
+  }
+  Mesh m;
+  CGAL::Surface_mesh<SC::Point_3> sc_mesh;
+  CGAL::MLS::Meshing_report report, sc_report;
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(
+    points, m, CGAL::MLS::parameters::report(report)));
+  MLS_CHECK(CGAL::MLS::mls_surface_reconstruction<CGAL::Parallel_if_available_tag>(
+    sc_points, sc_mesh, CGAL::MLS::parameters::report(sc_report)));
+  std::cout << "  Epick: " << num_vertices(m) << " vertices, " << report.feature_polylines
+            << " polylines; Simple_cartesian<double>: " << num_vertices(sc_mesh) << " vertices, "
+            << sc_report.feature_polylines << " polylines" << std::endl;
+  MLS_CHECK(num_faces(m) > 1000 && report.feature_polylines > 0 && !report.features_dropped);
+  MLS_CHECK(num_vertices(sc_mesh) == num_vertices(m) && num_faces(sc_mesh) == num_faces(m));
+  MLS_CHECK(sc_report.feature_polylines == report.feature_polylines);
+  std::size_t different = 0;
+  auto v = vertices(m).begin();
+  for(const auto w : vertices(sc_mesh)) {
+    const Point& p = m.point(*v++);
+    const SC::Point_3& q = sc_mesh.point(w);
+    different += p.x() == q.x() && p.y() == q.y() && p.z() == q.z() ? 0 : 1;
+  }
+  MLS_CHECK_MSG(different == 0, std::to_string(different) + " vertices differ");
 }
 
 // Where a fan is dropped and P_L's fit is blended in its place, projected_seeds() gives P_L's

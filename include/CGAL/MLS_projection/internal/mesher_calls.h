@@ -4,16 +4,17 @@
 // THE one file of the package that calls CGAL's meshers (Mesh_3 and Surface_mesher), so that
 // the API changes of CGAL 6 (named parameters of Mesh_3, the removal of Surface_mesher) touch
 // this file only. Everything here works on a type-erased implicit function
-// (std::function<double(const Point_3&)>): the meshers are instantiated once per kernel and
-// output mesh type, whatever the projection operator.
+// (std::function<double(const Point_3&)>), in Epick (see reconstruct_items): the meshers are
+// instantiated once per output mesh type, whatever the projection operator and the kernel.
 
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
 #define CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
 
-#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/MLS_projection/MLS_mesh_domain_3.h>
+#include <CGAL/MLS_projection/internal/evaluation_monitor.h>
+
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
-#include <CGAL/Mesh_domain_with_polyline_features_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
 #include <CGAL/make_mesh_3.h>
@@ -103,61 +104,6 @@ struct Mesher_report {
   const char* message = "";
 };
 
-struct Meshing_cancelled {};
-
-// The state shared by the copies of a monitored function (meshers copy their function).
-struct Evaluation_monitor {
-  // tells apart the runs in the cache of recent values (a monitor may reuse another's address)
-  const std::uint64_t run = next_run();
-  std::atomic<std::size_t> count{0};
-  std::atomic<bool> stop{false};
-  std::thread::id caller = std::this_thread::get_id();
-  const std::function<bool(double)>* callback = nullptr;
-  double expected = 1e6;
-  std::size_t limit = 0;             // 0: none
-  std::atomic<bool> limit_hit{false};
-  std::atomic<bool> time_hit{false};
-  std::atomic<bool> stall_hit{false};
-  bool throw_on_stop = false; // Surface_mesher has no stop flag: it is left by an exception
-
-  static std::uint64_t next_run() {
-    static std::atomic<std::uint64_t> runs{0};
-    return ++runs;
-  }
-};
-
-// The values of the function at points this thread evaluated in a run, in a direct-mapped table
-// indexed by a hash of the coordinates: Mesh_3 evaluates the circumcentre of each new cell to label
-// it, then again as an end of each of its facets' dual segments, and the ends of a segment to test
-// it for an intersection, then again to construct it, often many thousands of evaluations later:
-// 2^18 entries (10 MB) make a quarter fewer evaluations than 2^12 on a 50k-point scan, and more
-// entries save little.
-struct Recent_values {
-  struct Entry {
-    std::uint64_t run = 0;
-    double x = 0, y = 0, z = 0, value = 0;
-  };
-  static constexpr int bits = 18;
-  std::vector<Entry> entries = std::vector<Entry>(std::size_t(1) << bits);
-
-  static std::size_t slot(double x, double y, double z) {
-    std::uint64_t h = 0;
-    for(double c : {x, y, z}) {
-      std::uint64_t b;
-      std::memcpy(&b, &c, sizeof b);
-      h = (h ^ b) * 0x9E3779B97F4A7C15ull;
-    }
-    return std::size_t(h >> (64 - bits));
-  }
-  const double* find(std::uint64_t run, double x, double y, double z) const {
-    const Entry& e = entries[slot(x, y, z)];
-    return e.run == run && e.x == x && e.y == y && e.z == z ? &e.value : nullptr;
-  }
-  void add(std::uint64_t run, double x, double y, double z, double value) {
-    entries[slot(x, y, z)] = Entry{run, x, y, z, value};
-  }
-};
-
 // The report of a mesher stopped by the callback, the evaluation limit or the time limit.
 inline Mesher_report& stopped(const Evaluation_monitor& monitor, Mesher_report& report) {
   if(monitor.limit_hit.load()) {
@@ -241,124 +187,6 @@ private:
   std::condition_variable done_cv_;
   bool done_ = false;
   std::thread thread_;
-};
-
-// The function with an evaluation counter and the cancellation poll.
-template <class GeomTraits, class Point = typename GeomTraits::Point_3>
-struct Monitored_function {
-  using FT = typename GeomTraits::FT;
-  const std::function<double(const typename GeomTraits::Point_3&)>* function;
-  Evaluation_monitor* monitor;
-
-  FT operator()(const Point& p) const { return FT(value(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()))); }
-
-  double value(double x, double y, double z) const {
-    thread_local Recent_values recent;
-    if(const double* v = recent.find(monitor->run, x, y, z)) return *v;
-    const std::size_t c = monitor->count.fetch_add(1, std::memory_order_relaxed) + 1;
-    if(c == monitor->limit + 1 && monitor->limit > 0) { // exactly one call sees it
-      monitor->limit_hit.store(true, std::memory_order_relaxed);
-      monitor->stop.store(true, std::memory_order_release);
-    }
-    if((c & 1023) == 0 && monitor->callback && *monitor->callback && std::this_thread::get_id() == monitor->caller) {
-      if(!(*monitor->callback)(1. - std::exp(-double(c) / monitor->expected)))
-        monitor->stop.store(true, std::memory_order_release);
-    }
-    if(monitor->throw_on_stop && monitor->stop.load(std::memory_order_relaxed)) throw Meshing_cancelled();
-    const double v = (*function)(typename GeomTraits::Point_3(x, y, z));
-    const double out = std::isfinite(v) ? v : 1.; // a NaN would break the root finding: outside
-    recent.add(monitor->run, x, y, z, out);
-    return out;
-  }
-};
-
-// Mesh_3's domain: the implicit function's labeled domain with polyline features, whose
-// initial points are the intersections of the probe segments (CGAL 5.5's make_mesh_3 takes no
-// initial points; its own random segments can miss small components or thin objects), and whose
-// intersections of segments with the surface are found from the function's values (the labeled
-// domain bisects on the signs alone: some 15 evaluations per intersection, against about 5).
-template <class GeomTraits>
-class Probed_implicit_domain : public Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>> {
-  using Base = Mesh_domain_with_polyline_features_3<Labeled_mesh_domain_3<GeomTraits>>;
-
-public:
-  using Point_3 = typename Base::Point_3;
-  using Segment_3 = typename GeomTraits::Segment_3;
-  using Intersection = typename Base::Intersection;
-
-  /// `function`: the values whose signs `domain` labels; `error`: the largest distance, along a
-  /// segment, from an intersection to the surface.
-  Probed_implicit_domain(const Labeled_mesh_domain_3<GeomTraits>& domain, const Monitored_function<GeomTraits>& function,
-                         double error, std::vector<std::pair<Point_3, Point_3>> probes)
-    : Base(domain), function_(function), error_(error), probes_(std::move(probes)) {}
-
-  struct Construct_intersection {
-    const Probed_implicit_domain* domain;
-    Intersection operator()(const Segment_3& s) const { return domain->intersection(s.source(), s.target()); }
-    template <class Query> // rays and lines: the labeled domain's bisection (rare: the convex hull's)
-    Intersection operator()(const Query& q) const { return domain->Base::construct_intersection_object()(q); }
-  };
-  Construct_intersection construct_intersection_object() const { return Construct_intersection{this}; }
-
-  struct Construct_initial_points {
-    const Probed_implicit_domain* domain;
-    template <class OutputIterator>
-    OutputIterator operator()(OutputIterator pts, const int n = 12) const {
-      int found = 0;
-      for(const auto& s : domain->probes_) {
-        const Segment_3 segment(s.first, s.second);
-        const auto surface = domain->do_intersect_surface_object()(segment);
-        if(!surface) continue;
-        const Point_3 p = std::get<0>(domain->construct_intersection_object()(segment));
-        *pts++ = std::make_pair(p, domain->index_from_surface_patch_index(*surface));
-        ++found;
-      }
-      if(found == 0) return domain->Base::construct_initial_points_object()(pts, n);
-      return pts;
-    }
-  };
-  Construct_initial_points construct_initial_points_object() const { return Construct_initial_points{this}; }
-
-private:
-  // A point of [a, b] where f changes sign, within `error_` of the crossing along the segment
-  // (Illinois' regula falsi: the function is close to a signed distance, so few steps are needed);
-  // no intersection when the labels of a and b agree.
-  Intersection intersection(const Point_3& a, const Point_3& b) const {
-    const auto patch = this->do_intersect_surface_object()(Segment_3(a, b)); // the ends' values, cached
-    if(!patch) return Intersection();
-    const double ax = CGAL::to_double(a.x()), ay = CGAL::to_double(a.y()), az = CGAL::to_double(a.z());
-    const double dx = CGAL::to_double(b.x()) - ax, dy = CGAL::to_double(b.y()) - ay, dz = CGAL::to_double(b.z()) - az;
-    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const auto f = [&](double t) { return function_.value(ax + t * dx, ay + t * dy, az + t * dz); };
-    // the ends as the labels were computed (cached): a + (b - a) may differ from b by rounding
-    double t0 = 0, t1 = 1, f0 = f(0.);
-    double f1 = function_.value(CGAL::to_double(b.x()), CGAL::to_double(b.y()), CGAL::to_double(b.z()));
-    double t = 0.5;
-    int side = 0;
-    for(int it = 0; it < 64 && (t1 - t0) * length > error_; ++it) {
-      t = (f1 - f0) != 0 ? (t0 * f1 - t1 * f0) / (f1 - f0) : 0.5 * (t0 + t1);
-      if(!(t > t0 && t < t1)) t = 0.5 * (t0 + t1);
-      const double ft = f(t);
-      if(std::abs(ft) <= error_) break;
-      if((ft < 0) == (f0 < 0)) {
-        t0 = t;
-        f0 = ft;
-        if(side == -1) f1 *= 0.5; // Illinois: halve the end that stays
-        side = -1;
-      } else {
-        t1 = t;
-        f1 = ft;
-        if(side == 1) f0 *= 0.5;
-        side = 1;
-      }
-      t = 0.5 * (t0 + t1);
-    }
-    return Intersection(Point_3(ax + t * dx, ay + t * dy, az + t * dz), this->index_from_surface_patch_index(*patch), 2);
-  }
-
-  Monitored_function<GeomTraits> function_;
-  double error_;
-  std::vector<std::pair<Point_3, Point_3>> probes_;
 };
 
 // Mesh_3's complex, as a type of this namespace: when Mesh_3 fails on an error (e.g. "already
@@ -447,8 +275,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   static_assert(!std::is_convertible<ConcurrencyTag, Parallel_tag>::value,
                 "Parallel_tag is enabled but TBB is unavailable.");
 #endif
-  using Labeled = Labeled_mesh_domain_3<GeomTraits>;
-  using Domain = Probed_implicit_domain<GeomTraits>;
+  using Domain = MLS_mesh_domain_3<GeomTraits>;
   using Tr = typename Mesh_triangulation_3<Domain, Default, ConcurrencyTag>::type;
   using C3t3 = Mesh_complex<Tr, typename Domain::Corner_index, typename Domain::Curve_index>;
   using Criteria = Mesh_criteria_3<Tr>;
@@ -457,24 +284,19 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
 
   Mesher_report report;
   clear_mesh(mesh);
-  Evaluation_monitor monitor;
-  monitor.callback = &in.callback;
-  monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
-  monitor.limit = in.max_evaluations;
+  const auto monitor = std::make_shared<Evaluation_monitor>();
+  monitor->callback = &in.callback;
+  monitor->expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  monitor->limit = in.max_evaluations;
   const auto start = std::chrono::steady_clock::now();
   // a watchdog per run of Mesh_3, under the time limit of the whole meshing
   const auto watch = [&] {
     double seconds = 0;
     if(in.max_seconds > 0)
       seconds = (std::max)(1e-9, in.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    return std::make_unique<Meshing_watchdog>(monitor, seconds, true);
+    return std::make_unique<Meshing_watchdog>(*monitor, seconds, true);
   };
-  const Monitored_function<GeomTraits> function{&in.function, &monitor};
-
-  const double error = in.relative_error_bound * std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
-  Domain domain(Labeled::create_implicit_mesh_domain(function, in.bounding_sphere,
-                                                     params::relative_error_bound = in.relative_error_bound),
-                function, error, in.probes);
+  Domain domain(in.function, in.bounding_sphere, in.relative_error_bound, in.probes, monitor);
   // the domain with the polylines, when there are any (`domain` stays without: the fall-back)
   std::optional<Domain> featured;
   std::vector<std::vector<Point_3>> polylines;
@@ -489,7 +311,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   Criteria criteria(params::edge_size = edge_size, params::facet_angle = in.facet_angle,
                     params::facet_size = in.facet_size, params::facet_distance = in.facet_distance);
   C3t3 c3t3;
-  const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop);
+  const auto options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor->stop);
   if(has_features) {
     // The run with polylines gets a budget of `feature_budget` times the expected evaluations
     // and vertices, and stops when it stalls (see `Meshing_watchdog`): Mesh_3's refinement
@@ -497,19 +319,19 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
     // spacings thick, its manifold refinement kept inserting vertices for more than 5 minutes,
     // neither stalled nor over the budget of evaluations). Then the surface is meshed again
     // without them.
-    const std::size_t user_limit = monitor.limit;
-    const std::size_t budget = std::size_t(in.feature_budget * monitor.expected);
+    const std::size_t user_limit = monitor->limit;
+    const std::size_t budget = std::size_t(in.feature_budget * monitor->expected);
     const bool budgeted = in.feature_budget > 0 && (user_limit == 0 || budget < user_limit);
-    if(budgeted) monitor.limit = budget;
+    if(budgeted) monitor->limit = budget;
     // measured: about 250 evaluations per vertex (see `Mesher_input::expected_evaluations`)
-    const std::size_t max_vertices = in.feature_budget > 0 ? std::size_t(in.feature_budget * monitor.expected / 250) + 1 : 0;
+    const std::size_t max_vertices = in.feature_budget > 0 ? std::size_t(in.feature_budget * monitor->expected / 250) + 1 : 0;
     auto watchdog = watch();
     try {
-      const auto featured_options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor.stop,
+      const auto featured_options = params::mesh_3_options(params::pointer_to_stop_atomic_boolean = &monitor->stop,
                                                            params::maximal_number_of_vertices = max_vertices);
       c3t3 = make_mesh_3<C3t3>(*featured, criteria, params::features(*featured), params::no_perturb(), params::no_exude(),
                                params::manifold(), featured_options);
-      if(!monitor.stop.load() && insert_missed_initial_points(c3t3, *featured, in.facet_size) > 0)
+      if(!monitor->stop.load() && insert_missed_initial_points(c3t3, *featured, in.facet_size) > 0)
         refine_mesh_3(c3t3, *featured, criteria, params::no_perturb(), params::no_exude(), params::no_reset_c3t3(),
                       params::manifold(), featured_options);
     } catch(const Failure_exception&) {
@@ -518,26 +340,26 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
     }
     watchdog.reset();
     const bool too_many_vertices = max_vertices > 0 && c3t3.triangulation().number_of_vertices() >= max_vertices;
-    if(((budgeted && monitor.limit_hit.load()) || monitor.stall_hit.load() || too_many_vertices) &&
-       !monitor.time_hit.load()) {
+    if(((budgeted && monitor->limit_hit.load()) || monitor->stall_hit.load() || too_many_vertices) &&
+       !monitor->time_hit.load()) {
       report.features_dropped = true;
       report.feature_budget_exceeded = true;
       has_features = false;
       c3t3 = C3t3();
-      monitor.count.store(0);
-      monitor.limit_hit.store(false);
-      monitor.stall_hit.store(false);
-      monitor.stop.store(false);
+      monitor->count.store(0);
+      monitor->limit_hit.store(false);
+      monitor->stall_hit.store(false);
+      monitor->stop.store(false);
     }
-    monitor.limit = user_limit;
+    monitor->limit = user_limit;
   }
-  if(!has_features && !monitor.stop.load()) {
+  if(!has_features && !monitor->stop.load()) {
     auto watchdog = watch();
     c3t3 = make_mesh_3<C3t3>(domain, criteria, params::no_features(), params::no_perturb(), params::no_exude(),
                              params::manifold(), options);
   }
-  report.evaluations = monitor.count.load();
-  if(monitor.stop.load()) return stopped(monitor, report);
+  report.evaluations = monitor->count.load();
+  if(monitor->stop.load()) return stopped(*monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
   if(!has_finite_vertices(mesh)) {
     clear_mesh(mesh);
@@ -566,13 +388,13 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
 
   Mesher_report report;
   clear_mesh(mesh);
-  Evaluation_monitor monitor;
-  monitor.callback = &in.callback;
-  monitor.expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
-  monitor.limit = in.max_evaluations;
-  std::optional<Meshing_watchdog> watchdog(std::in_place, monitor, in.max_seconds, false);
-  monitor.throw_on_stop = true;
-  const Function function{&in.function, &monitor};
+  const auto monitor = std::make_shared<Evaluation_monitor>();
+  monitor->callback = &in.callback;
+  monitor->expected = in.expected_evaluations > 0 ? in.expected_evaluations : 1e6;
+  monitor->limit = in.max_evaluations;
+  std::optional<Meshing_watchdog> watchdog(std::in_place, *monitor, in.max_seconds, false);
+  monitor->throw_on_stop = true;
+  const Function function{std::make_shared<const std::function<double(const typename GeomTraits::Point_3&)>>(in.function), monitor};
 
   const auto& c = in.bounding_sphere.center();
   const typename SGT::Point_3 inner(CGAL::to_double(in.inner_point.x()), CGAL::to_double(in.inner_point.y()),
@@ -588,13 +410,13 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
     Surface_mesh_default_criteria_3<STr> criteria(in.facet_angle, in.facet_size, in.facet_distance);
     make_surface_mesh(c2t3, surface, criteria, Manifold_tag());
     watchdog.reset();
-    report.evaluations = monitor.count.load();
+    report.evaluations = monitor->count.load();
     facets_in_complex_2_to_triangle_mesh(c2t3, mesh);
   } catch(const Meshing_cancelled&) {
     watchdog.reset();
     clear_mesh(mesh);
-    report.evaluations = monitor.count.load();
-    return stopped(monitor, report);
+    report.evaluations = monitor->count.load();
+    return stopped(*monitor, report);
   }
   if(!has_finite_vertices(mesh)) {
     clear_mesh(mesh);

@@ -18,8 +18,11 @@
 #include <CGAL/MLS_projection/internal/open_surface.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/internal/outlier_points.h>
+#include <CGAL/MLS_projection/internal/protected_polylines.h>
+#include <CGAL/MLS_projection/internal/surface_function.h>
 #include <CGAL/MLS_projection/internal/unsupported_components.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Named_function_parameters.h>
@@ -43,129 +46,6 @@
 namespace CGAL {
 namespace MLS {
 namespace internal {
-
-/// The sharp-feature polylines (and the number of corners) to protect when meshing `function`:
-/// `detect_sharp_features()` (its defaults) with the operator that projected the
-/// seeds (screened by P_L, see `MLS_implicit_function`) on the seeds' results (project once, use
-/// twice), for the operators that find creases; none for the others. `queries`: the helper and
-/// relaxation points projected.
-template <class ConcurrencyTag, class ImplicitFunction>
-std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(const ImplicitFunction& function,
-                                                                               std::size_t& number_of_corners,
-                                                                               std::size_t& queries) {
-  number_of_corners = 0;
-  queries = 0;
-  using Projection = typename ImplicitFunction::Projection_type;
-  if constexpr(finds_creases<Projection>::value) {
-    if(!function.has_seed_projection()) return {};
-    auto features = detect_sharp_features<ConcurrencyTag>(function.seed_projection(), function.projected_seeds());
-    number_of_corners = features.corners.size();
-    queries = features.statistics.helper_queries + features.statistics.relaxation_queries;
-    return std::move(features.polylines);
-  }
-  (void)function;
-  return {};
-}
-
-/// Removes from `polylines` those the surface \f$f = 0\f$ does not pass through: the median of
-/// \f$|f|\f$ over their vertices exceeds `facet_distance`. With them, Mesh_3's manifold refinement,
-/// which cannot move the protected vertices, failed or went on without end. They occur where the
-/// blended fits round a crease the operator finds sharp (noisy scans, whose seeds near the creases
-/// keep P_L's fit). Returns the number removed.
-template <class Point_3, class Function>
-std::size_t drop_polylines_off_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f,
-                                       double facet_distance) {
-  const std::size_t before = polylines.size();
-  std::vector<double> off;
-  polylines.erase(std::remove_if(polylines.begin(), polylines.end(),
-                                 [&](const std::vector<Point_3>& line) {
-                                   if(line.empty()) return true;
-                                   off.clear();
-                                   for(const Point_3& p : line) off.push_back(std::abs(CGAL::to_double(f(p))));
-                                   std::nth_element(off.begin(), off.begin() + off.size() / 2, off.end());
-                                   return !(off[off.size() / 2] <= facet_distance);
-                                 }),
-                  polylines.end());
-  return before - polylines.size();
-}
-
-/// Removes from `polylines` the vertices where `keep(vertex)` is false, splitting the polylines
-/// there; pieces of fewer than 2 vertices are dropped.
-template <class Point_3, class Keep>
-void cut_polylines(std::vector<std::vector<Point_3>>& polylines, const Keep& keep) {
-  std::vector<std::vector<Point_3>> cut;
-  for(const std::vector<Point_3>& line : polylines) {
-    std::vector<Point_3> piece;
-    for(const Point_3& p : line) {
-      if(keep(p)) {
-        piece.push_back(p);
-        continue;
-      }
-      if(piece.size() >= 2) cut.push_back(std::move(piece));
-      piece.clear();
-    }
-    if(piece.size() >= 2) cut.push_back(std::move(piece));
-  }
-  polylines = std::move(cut);
-}
-
-/// The point \f$p\f$ moved onto the surface \f$f = 0\f$ by Newton steps along the gradient of \f$f\f$
-/// (central differences of step `step`), until \f$|f| \le\f$ `tolerance` (at most 8 steps, the
-/// best point kept).
-template <class Point_3, class Function>
-Point_3 snap_to_surface(Point_3 p, const Function& f, double step, double tolerance) {
-  using Vector_3 = typename Kernel_traits<Point_3>::Kernel::Vector_3;
-  const auto value = [&f](const Point_3& q) { return CGAL::to_double(f(q)); };
-  const double e = step;
-  double v = value(p);
-  Point_3 best = p;
-  double best_v = std::abs(v);
-  for(int it = 0; it < 8 && best_v > tolerance; ++it) {
-    const Vector_3 g((value(p + Vector_3(e, 0, 0)) - value(p - Vector_3(e, 0, 0))) / (2 * e),
-                     (value(p + Vector_3(0, e, 0)) - value(p - Vector_3(0, e, 0))) / (2 * e),
-                     (value(p + Vector_3(0, 0, e)) - value(p - Vector_3(0, 0, e))) / (2 * e));
-    const double g2 = CGAL::to_double(g.squared_length());
-    if(!(g2 > 1e-12)) break;
-    p = p - g * (v / g2);
-    v = value(p);
-    if(std::abs(v) < best_v) {
-      best = p;
-      best_v = std::abs(v);
-    }
-  }
-  return best;
-}
-
-/// Fits the vertices of `polylines` to the surface \f$f = 0\f$: those further than `facet_distance`
-/// from it (in \f$|f|\f$) are removed (`cut_polylines()`), and the others are moved onto it
-/// (`snap_to_surface()`, step \f$10^{-3}\f$ facet distances). Mesh_3 centres its protecting balls
-/// on the polylines and never moves them: next to a centre off the surface, its manifold refinement
-/// could not make the surface a disk and looped without end. A vertex moves the same wherever it
-/// occurs (corners, the ends of a closed polyline).
-template <class Point_3, class Function>
-void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, const Function& f, double facet_distance,
-                              double tolerance) {
-  cut_polylines(polylines, [&](const Point_3& p) { return std::abs(CGAL::to_double(f(p))) <= facet_distance; });
-  for(std::vector<Point_3>& line : polylines)
-    for(Point_3& p : line) p = snap_to_surface(p, f, 1e-3 * facet_distance, tolerance);
-}
-
-/// Whether `f` is positive at 256 points spread evenly over the sphere (Fibonacci lattice):
-/// the surface \f$f = 0\f$ is then closed inside it. It is not when the data bound no volume
-/// (coplanar points, an open scan): the region \f$f < 0\f$ then reaches the sphere, and Mesh_3
-/// would refine the intersection of the surface with the sphere without end.
-template <class Point_3, class Function>
-bool is_positive_on_sphere(const Function& f, const Point_3& centre, double radius) {
-  const int n = 256;
-  const double golden = CGAL_PI * (3. - std::sqrt(5.));
-  for(int i = 0; i < n; ++i) {
-    const double z = 1. - (2. * i + 1.) / n, r = std::sqrt((std::max)(0., 1. - z * z)), t = golden * i;
-    const Point_3 p(CGAL::to_double(centre.x()) + radius * r * std::cos(t), CGAL::to_double(centre.y()) + radius * r * std::sin(t),
-                    CGAL::to_double(centre.z()) + radius * z);
-    if(!(f(p) > 0)) return false;
-  }
-  return true;
-}
 
 /// The settings of `mls_surface_reconstruction()`: its named parameters, and the constants that
 /// the tests can change.
@@ -337,50 +217,42 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     out.corners = corners;
     out.seconds_features = since(t_features);
     if(!report(FEATURES_STAGE, 1.)) return fail("cancelled");
-    // 4. meshing
-    Mesher_input<K> in;
-    in.bounding_sphere = function.bounding_sphere();
-    // The function, made positive outside the bounding sphere: max(f, |x - c| - R). Mesh_3 also
-    // evaluates points far outside it (the circumcentres of the initial triangulation's cells),
-    // where the far value, signed by the nearest seed's normal, may change sign wherever two
-    // seeds with different normals are about equally far (e.g. on the axis of a bore, beyond the
-    // solid), which would grow spurious surface there.
-    const Point_3 centre = in.bounding_sphere.center();
-    const double radius = std::sqrt(CGAL::to_double(in.bounding_sphere.squared_radius()));
-    // Beyond the sphere, the value is the distance to it, without evaluating f there (the points
-    // far out are many, and far from every seed).
+    // 4. meshing, in Epick whatever K: CGAL's meshers need exact predicates (Mesh_3's protection
+    // of the polylines crashed with Simple_cartesian<double>)
+    using Mesher_point = Epick::Point_3;
+    Mesher_input<Epick> in;
+    const auto sphere = function.bounding_sphere();
+    in.bounding_sphere = Epick::Sphere_3(point_as<Mesher_point>(sphere.center()), CGAL::to_double(sphere.squared_radius()));
     // For an open scan, the slab, without evaluating f where its function is positive whatever f is.
-    in.function = [function, data_distance, slab, open = s.open_surface, centre, radius](const Point_3& p) {
-      const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
-      if(outside > 0) return outside;
-      if(!open) return (std::max)(CGAL::to_double(function(p)), outside);
-      const double d = data_distance(p);
-      if(d > slab.reach) return d - slab.reach;
-      return (std::max)(slab.value(CGAL::to_double(function(p)), d), outside);
-    };
+    if(s.open_surface)
+      in.function = [function, data_distance, slab, centre = sphere.center(),
+                     radius = std::sqrt(CGAL::to_double(sphere.squared_radius()))](const Mesher_point& q) {
+        const Point_3 p = point_as<Point_3>(q);
+        const double outside = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, centre))) - radius;
+        if(outside > 0) return outside;
+        const double d = data_distance(p);
+        if(d > slab.reach) return d - slab.reach;
+        return (std::max)(slab.value(CGAL::to_double(function(p)), d), outside);
+      };
+    else
+      in.function = clamped_to_sphere<Mesher_point>(function);
     const auto& seeds = function.projected_seeds();
     // for the slab, half a spacing under a seed (a thin part may be thinner than the slab is deep)
-    in.inner_point = s.open_surface && !seeds.empty() ? seeds[0].point - seeds[0].normal * (0.5 * spacing)
-                                                            : function.get_inner_point();
-    // the sphere check on the function itself (the clamped one is 0 on the sphere)
-    if(!s.open_surface &&
-       !is_positive_on_sphere([&function](const Point_3& p) { return CGAL::to_double(function(p)); }, centre,
-                                        radius))
-      return fail("the surface is not closed (its inside reaches the bounding sphere: the points bound no volume, e.g. "
-                  "coplanar points or an open scan, or the sides of a thin part were not told apart)");
+    in.inner_point = point_as<Mesher_point>(s.open_surface && !seeds.empty()
+                                              ? seeds[0].point - seeds[0].normal * (0.5 * spacing)
+                                              : function.get_inner_point());
+    if(!s.open_surface)
+      if(const char* why = closed_surface_failure(function)) return fail(why);
     if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
-    // from inside to outside across the surface (for the slab, from its middle)
-    const double below = s.open_surface ? 0.5 * slab.depth : h;
-    const std::size_t stride = (std::max<std::size_t>)(1, seeds.size() / 128);
-    for(std::size_t i = 0; i < seeds.size(); i += stride) {
-      const Point_3& p = seeds[i].point;
-      const Vector_3& n = seeds[i].normal;
-      in.probes.emplace_back(p - n * below, p + n * h);
-      // and across the slab's back: the points on a flat scan alone are coplanar, and Mesh_3 finds
-      // no cell to refine in their triangulation
-      if(s.open_surface) in.probes.emplace_back(p - n * below, p - n * (1.5 * slab.depth));
+    // from inside to outside across the surface (for the slab, from its middle), and across the
+    // slab's back: the points on a flat scan alone are coplanar, and Mesh_3 finds no cell to refine
+    // in their triangulation
+    in.probes = s.open_surface ? surface_probes<Mesher_point>(seeds, 0.5 * slab.depth, h, 1.5 * slab.depth)
+                               : surface_probes<Mesher_point>(seeds, h, h);
+    for(const auto& line : polylines) {
+      in.polylines.emplace_back();
+      for(const Point_3& p : line) in.polylines.back().push_back(point_as<Mesher_point>(p));
     }
-    in.polylines = std::move(polylines);
     in.facet_size = facet_size;
     in.facet_distance = facet_distance;
     in.edge_size = s.edge_size > 0 ? s.edge_size : 0.75 * in.facet_size;
