@@ -18,7 +18,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -122,7 +122,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   switch(in.ConsumeIntegralInRange<int>(0, 7)) {
   case 0: run<MLS::Levin_projection<K, MLS::Polynomial_function_space<3>>>(in, "levin quadratic 3D"); break;
   case 1: run<MLS::Levin_projection<K, MLS::Plane_function_space<3>>>(in, "levin plane 3D"); break;
-  case 2: run<MLS::Unified_projection<K, MLS::Quadratic_function_space<3>>>(in, "unified quadratic 3D"); break;
+  case 2: run<MLS::Unified_projection<K, MLS::Paraboloid_function_space<3>>>(in, "unified quadratic 3D"); break;
   case 3: run<MLS::Unified_projection<K, MLS::Wedge_fan_function_space<3>>>(in, "unified wedge 3D"); break;
   case 4: run<MLS::Mixed_projection<K, 3>>(in, "mixed 3D"); break;
   case 5: run<MLS::Levin_projection<K, MLS::Polynomial_function_space<2>>>(in, "levin quadratic 2D"); break;

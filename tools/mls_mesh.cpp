@@ -398,7 +398,7 @@ int run(int argc, char** argv) {
   const std::string removed = (report.off_surface_polylines == 0 ? std::string()
                                : ", " + std::to_string(report.off_surface_polylines) + " polylines off the surface dropped") +
                               (report.removed_components == 0 ? std::string()
-                              : ", " + std::to_string(report.removed_components) + " component(s) away from the data removed");
+                              : ", " + std::to_string(report.removed_components) + " unsupported component(s) removed (away from the data or smaller than a facet)");
   const std::string closure = closed ? "closed"
                               : s.open ? "open (" + std::to_string(report.boundary_cycles) + " boundary cycle" +
                                            (report.boundary_cycles == 1 ? ")" : "s)")

@@ -60,7 +60,7 @@ bool reconstruct(const mls_tools::Mesh_input& input, mls_tools::Mesh& mesh, cons
     return reconstruct(input, mesh, s, report, Levin_operator_tag<Polynomial_function_space<3>>(), maps);
   case C::UNIFIED_PLANE: return reconstruct(input, mesh, s, report, Unified_operator_tag<Plane_function_space<3>>(), maps);
   case C::UNIFIED_QUADRATIC:
-    return reconstruct(input, mesh, s, report, Unified_operator_tag<Quadratic_function_space<3>>(), maps);
+    return reconstruct(input, mesh, s, report, Unified_operator_tag<Paraboloid_function_space<3>>(), maps);
   case C::UNIFIED_WEDGE:
     return reconstruct(input, mesh, s, report, Unified_operator_tag<Wedge_fan_function_space<3>>(), maps);
   case C::MIXED: break;

@@ -20,9 +20,9 @@
 //     (k = 18 by default, degree 2 fit and 2 Monge; its own kd-tree is inside its time).
 // Table 2: the closest-point operators, 10-1000 times slower per query, on a random subset of
 // the input points (--subset, fixed seed), with the same function spaces' default options:
-//   - P_S:            Single_phase_projection<Epick, Quadratic_function_space<3>>,
-//   - P_E:            Enriched_projection<Epick, Quadratic_function_space<3>>,
-//   - P_U quadratic:  Unified_projection<Epick, Quadratic_function_space<3>>,
+//   - P_S:            Single_phase_projection<Epick, Paraboloid_function_space<3>>,
+//   - P_E:            Enriched_projection<Epick, Paraboloid_function_space<3>>,
+//   - P_U quadratic:  Unified_projection<Epick, Paraboloid_function_space<3>>,
 //   - P_U wedge:      Unified_projection<Epick, Wedge_fan_function_space<3>>,
 //   - mixed:          Mixed_projection<Epick, 3> (P_U quadratic and P_U wedge, the better kept),
 // reported per query, as ratios of CPU time per query to P_L quadratic and to jet measured in
@@ -44,7 +44,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/jet_smooth_point_set.h>
@@ -538,13 +538,13 @@ Row run_named_operator(const std::string& op, const Input& input, const std::vec
   const std::vector<Point>& points = input.points;
   if(op == "single")
     return run_operator(input, queries, "P_S quadratic", h,
-                        maker<Single_phase_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+                        maker<Single_phase_projection<Kernel, Paraboloid_function_space<3>>>(points, options));
   if(op == "enriched")
     return run_operator(input, queries, "P_E quadratic", h,
-                        maker<Enriched_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+                        maker<Enriched_projection<Kernel, Paraboloid_function_space<3>>>(points, options));
   if(op == "unified-quadratic")
     return run_operator(input, queries, "P_U quadratic", h,
-                        maker<Unified_projection<Kernel, Quadratic_function_space<3>>>(points, options));
+                        maker<Unified_projection<Kernel, Paraboloid_function_space<3>>>(points, options));
   if(op == "unified-wedge")
     return run_operator(input, queries, "P_U wedge", h,
                         maker<Unified_projection<Kernel, Wedge_fan_function_space<3>>>(points, options));

@@ -11,7 +11,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/Closest_point_projection.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -100,7 +100,7 @@ int main() {
   CGAL::MLS::Projection_options options;
   options.weight = CGAL::MLS::Weight_kind::WENDLAND; // compact support: every weighted sample lies on the circle
   const CGAL::MLS::Unified_projection<Kernel, Circle_function_space> with_circles(samples, options);
-  const CGAL::MLS::Unified_projection<Kernel, CGAL::MLS::Quadratic_function_space<2>> with_parabolas(
+  const CGAL::MLS::Unified_projection<Kernel, CGAL::MLS::Paraboloid_function_space<2>> with_parabolas(
       with_circles.shared_samples(), options);
 
   const double h = with_circles.bandwidth();

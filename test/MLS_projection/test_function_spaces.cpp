@@ -1,5 +1,5 @@
 // Tests of the function spaces with closest-point projection (MLSFunctionSpace):
-// Plane_function_space, Quadratic_function_space and Wedge_fan_function_space, in 2D and 3D;
+// Plane_function_space, Paraboloid_function_space and Wedge_fan_function_space, in 2D and 3D;
 // and of the weight functions' derivatives.
 // Eigen-only: no CGAL kernel or search header, so that this file compiles fast.
 //
@@ -11,7 +11,7 @@
 #include "test_framework.h"
 
 #include <CGAL/MLS_projection/Plane_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/Weight_function.h>
 
@@ -93,7 +93,7 @@ double brute_parabola(double k, const V2& x) {
 
 // Checks a 2D graph closest point: on the curve, distance, normal, parallelism, sign.
 void check_parabola(double k, const V2& x, Worst& worst) {
-  MLS::Quadratic_function_space<2> fs;
+  MLS::Paraboloid_function_space<2> fs;
   Eigen::Matrix<double, 1, 1> c(k);
   const auto cp = fs.closest_point(c, x);
   const double scale = 1. + x.norm();
@@ -130,7 +130,7 @@ MLS_TEST(quadratic_2_special_cases) {
   Worst worst("parabola special");
   std::mt19937 g(2);
   std::uniform_real_distribution<double> u(-2, 2);
-  MLS::Quadratic_function_space<2> fs;
+  MLS::Paraboloid_function_space<2> fs;
   // k = 0: the line, exactly.
   for(int i = 0; i < 50; ++i) {
     const V2 x(u(g), u(g));
@@ -249,7 +249,7 @@ double brute_quadric(const Quadric& Q, const V3& x) {
 }
 
 void check_quadric(const Quadric& Q, const V3& x, Worst& worst, double tol = 1e-9) {
-  MLS::Quadratic_function_space<3> fs;
+  MLS::Paraboloid_function_space<3> fs;
   const Eigen::Vector3d c(Q.a, Q.b, Q.theta);
   const auto cp = fs.closest_point(c, x);
   auto f = [&](const V2& u) { return Q(u); };
@@ -312,7 +312,7 @@ MLS_TEST(quadratic_3_degenerate_cases) {
     check_quadric({-1., 2., th}, V3(0, 0, -r), worst);
   }
   // on the axis of an umbilic above its centre of curvature: a circle of closest points
-  MLS::Quadratic_function_space<3> fs;
+  MLS::Paraboloid_function_space<3> fs;
   for(double b : {0.25, 0.5, 0.5 + 1e-9, 1., 5.}) {
     const V3 x(0, 0, b);
     check_quadric({1., 1., 0.3}, x, worst);
@@ -332,8 +332,8 @@ MLS_TEST(quadratic_3_degenerate_cases) {
 MLS_TEST(quadratic_fit_recovers_member) {
   std::mt19937 g(5);
   std::uniform_real_distribution<double> u(-1, 1), ang(-CGAL_PI, CGAL_PI);
-  MLS::Quadratic_function_space<3> fs3;
-  MLS::Quadratic_function_space<2> fs2;
+  MLS::Paraboloid_function_space<3> fs3;
+  MLS::Paraboloid_function_space<2> fs2;
   for(int t = 0; t < 20; ++t) {
     const Quadric Q{2 * u(g), 2 * u(g), ang(g)};
     std::vector<V3> p;

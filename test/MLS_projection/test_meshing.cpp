@@ -957,7 +957,8 @@ MLS_TEST(open_scan_meshed_where_the_data_is) {
 
 // The components of a mesh away from the data are removed, the nearest one kept: two unit
 // icosahedra 4 apart, the data on the first one's vertices. Bound 0.5: the second's vertices are
-// at least 2 from the data, the first's on it.
+// at least 2 from the data, the first's on it. And the components smaller than a facet: a
+// tetrahedron 0.001 across on the first icosahedron's vertex, the data on it too.
 MLS_TEST(unsupported_components_removed) {
   const Point a(0, 0, 0), b(4, 0, 0);
   const auto two = [&] {
@@ -980,17 +981,30 @@ MLS_TEST(unsupported_components_removed) {
     if(CGAL::squared_distance(m.point(v), a) < 2) on_a.push_back(m.point(v));
   }
   MLS_CHECK(on_a.size() == 12 && on_both.size() == 24);
-  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(m, distance_to(on_a), 0.5) == 1);
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(m, distance_to(on_a), 0.5, 0.) == 1);
   MLS_CHECK(m.number_of_vertices() == 12 && m.number_of_faces() == 20);
   for(auto v : m.vertices()) MLS_CHECK(CGAL::squared_distance(m.point(v), a) < 1.01);
   Mesh both = two();
-  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(both, distance_to(on_both), 0.5) == 0);
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(both, distance_to(on_both), 0.5, 0.) == 0);
   MLS_CHECK(both.number_of_faces() == 40);
   // data far from both: the nearer one (b) stays
   Mesh far = two();
-  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(far, distance_to({Point(10, 0, 0)}), 0.5) == 1);
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(far, distance_to({Point(10, 0, 0)}), 0.5, 0.) == 1);
   MLS_CHECK(far.number_of_faces() == 20);
   for(auto v : far.vertices()) MLS_CHECK(CGAL::squared_distance(far.point(v), b) < 1.01);
+  // a bubble smaller than a facet, on the data: removed with a facet size of 0.1, kept without
+  const Point top = m.point(*m.vertices().begin());
+  const auto with_bubble = [&] {
+    Mesh w = m;
+    CGAL::make_tetrahedron(top, top + Vector(0.001, 0, 0), top + Vector(0, 0.001, 0), top + Vector(0, 0, 0.001), w);
+    return w;
+  };
+  Mesh bubble = with_bubble();
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(bubble, distance_to(on_a), 0.5, 0.1) == 1);
+  MLS_CHECK(bubble.number_of_faces() == 20);
+  Mesh kept = with_bubble();
+  MLS_CHECK(CGAL::MLS::internal::remove_unsupported_components(kept, distance_to(on_a), 0.5, 0.) == 0);
+  MLS_CHECK(kept.number_of_faces() == 24);
 }
 
 // The polylines the surface f = 0 does not pass through are dropped: for the unit sphere's

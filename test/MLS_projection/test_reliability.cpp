@@ -33,7 +33,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/project_points.h>
 
@@ -302,7 +302,7 @@ void check_bad_inputs(const char* op_name, std::size_t queries_per_case, bool is
 
 using Levin_3 = MLS::Levin_projection<K, MLS::Polynomial_function_space<3>>;
 using Levin_plane_3 = MLS::Levin_projection<K, MLS::Plane_function_space<3>>;
-using Unified_quadratic_3 = MLS::Unified_projection<K, MLS::Quadratic_function_space<3>>;
+using Unified_quadratic_3 = MLS::Unified_projection<K, MLS::Paraboloid_function_space<3>>;
 using Unified_wedge_3 = MLS::Unified_projection<K, MLS::Wedge_fan_function_space<3>>;
 using Mixed_3 = MLS::Mixed_projection<K, 3>;
 using Levin_2 = MLS::Levin_projection<K, MLS::Polynomial_function_space<2>>;

@@ -20,7 +20,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/mls_project_point_set.h>
 #include <CGAL/MLS_projection/project_points.h>
@@ -488,7 +488,7 @@ MLS_TEST(paraboloid_is_reproduced_exactly_by_quadratic_space) {
   // 1e-6 from the surface), hence the larger budget of this test.
   MLS::Projection_options options = wendland();
   options.max_evaluations = 4000;
-  MLS::Unified_projection<Epick, MLS::Quadratic_function_space<3>> PU(pts, options);
+  MLS::Unified_projection<Epick, MLS::Paraboloid_function_space<3>> PU(pts, options);
   double worst = 0;
   for(int i = 0; i < 40; ++i) {
     const double x = 0.3 * std::sin(1.7 * i), y = 0.3 * std::cos(1.1 * i);
@@ -514,7 +514,7 @@ MLS_TEST(pinch_is_gone_near_a_sharp_2d_apex) {
     const Wedge_2 wedge{degrees * CGAL_PI / 180};
     const auto pts = wedge.sample();
     MLS::Levin_projection<SC, MLS::Polynomial_function_space<2>> PL(pts);
-    MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PQ(PL.shared_samples());
+    MLS::Unified_projection<SC, MLS::Paraboloid_function_space<2>> PQ(PL.shared_samples());
     MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PW(PL.shared_samples());
     const double h = PL.bandwidth();
     double worst_L = 0, worst_Q = 0, worst_W = 0;
@@ -580,7 +580,7 @@ MLS_TEST(invariance_under_rigid_motions_and_scaling) {
         "P_U wedge, cube");
   MLS::Projection_options long_budget = wendland(); // see paraboloid_is_reproduced_exactly_by_quadratic_space
   long_budget.max_evaluations = 4000;
-  check([&](const auto& p) { return MLS::Unified_projection<Epick, MLS::Quadratic_function_space<3>>(p, long_budget); }, paraboloid, pq,
+  check([&](const auto& p) { return MLS::Unified_projection<Epick, MLS::Paraboloid_function_space<3>>(p, long_budget); }, paraboloid, pq,
         "P_U quadratic, paraboloid");
 }
 
@@ -648,7 +648,7 @@ MLS_TEST(continuity_along_a_line_of_queries) {
     const Wedge_2 wedge{degrees * CGAL_PI / 180};
     const auto pts = wedge.sample();
     MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PU(pts, wendland());
-    MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PQ(PU.shared_samples());
+    MLS::Unified_projection<SC, MLS::Paraboloid_function_space<2>> PQ(PU.shared_samples());
     const double step = 0.3 / 400;
     for(int space = 0; space < 2; ++space) {
       V2 previous;
@@ -691,9 +691,9 @@ MLS_TEST(projection_property_of_the_closest_point_operators) {
     pts.emplace_back(std::cos(t) + e[0], std::sin(t) + e[1]);
   }
   const auto wedge_pts = Wedge_2{CGAL_PI / 2}.sample();
-  MLS::Unified_projection<SC, MLS::Quadratic_function_space<2>> PU(pts);
-  MLS::Enriched_projection<SC, MLS::Quadratic_function_space<2>> PE(PU.shared_samples());
-  MLS::Single_phase_projection<SC, MLS::Quadratic_function_space<2>> PS(PU.shared_samples());
+  MLS::Unified_projection<SC, MLS::Paraboloid_function_space<2>> PU(pts);
+  MLS::Enriched_projection<SC, MLS::Paraboloid_function_space<2>> PE(PU.shared_samples());
+  MLS::Single_phase_projection<SC, MLS::Paraboloid_function_space<2>> PS(PU.shared_samples());
   MLS::Unified_projection<SC, MLS::Wedge_fan_function_space<2>> PW(wedge_pts);
   double worst[4] = {0, 0, 0, 0};
   for(int i = 0; i < 40; ++i) {

@@ -6,7 +6,7 @@ The concept `MLSFunctionSpace` describes a finite-dimensional family \f$\mathcal
 curves (\f$D = 2\f$) or surfaces (\f$D = 3\f$), placed in a local reference frame, onto which
 points can be projected exactly: the closest-point projection \f$C_f(x)\f$ of the unified MLS
 projection \f$\mathcal{P}_U\f$ (equation 6 of the paper). Its members may be graphs of smooth
-functions (`Quadratic_function_space`) or non-smooth sets such as fans of planar wedges
+functions (`Paraboloid_function_space`) or non-smooth sets such as fans of planar wedges
 (`Wedge_fan_function_space`), whose creases and apexes the operator then reconstructs exactly.
 
 Everything is in <em>frame coordinates</em>: a point \f$x \in \mathbb{R}^D\f$ whose first
@@ -21,7 +21,7 @@ any finite input. A model is a small class, cheap to copy; all member functions 
 and thread-safe.
 
 \cgalHasModel `CGAL::MLS::Plane_function_space<D>`
-\cgalHasModel `CGAL::MLS::Quadratic_function_space<D>`
+\cgalHasModel `CGAL::MLS::Paraboloid_function_space<D>`
 \cgalHasModel `CGAL::MLS::Wedge_fan_function_space<D, N>`
 
 \sa `CGAL::MLS::Closest_point<D>`

@@ -52,7 +52,7 @@ typedef unspecified_type Domain_point;
 /// \name Operations
 /// @{
 
-/// A short name of the space, for messages and command-line options (e.g. `"quadratic"`).
+/// A short name of the space, for messages and command-line options (e.g. `"polynomial"`).
 static const char* name();
 
 /// The fewest neighbours a fit needs. Operators report `TOO_FEW_NEIGHBORS` when the

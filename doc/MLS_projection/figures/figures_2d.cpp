@@ -6,7 +6,7 @@
 //
 // Only the public API of the package is used, except that the energy landscapes evaluate the
 // energies of equations 1 and 6 directly, with the package's Weight_function and the
-// closest-point projection of Quadratic_function_space<2>, on a grid of frames.
+// closest-point projection of Paraboloid_function_space<2>, on a grid of frames.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/MLS_projection.h>
@@ -102,11 +102,11 @@ double energy_levin(const Landscape_setup& s, const V2& n, const V2& q) {
   return den > 0 ? num / den : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Equation 6 for one member f(x) = k x^2 of Quadratic_function_space<2> over the frame (n, q):
+// Equation 6 for one member f(x) = k x^2 of Paraboloid_function_space<2> over the frame (n, q):
 // closest-point residuals, weights at C_{H,f}(r), r = the origin.
 double energy_unified(const Landscape_setup& s, const V2& n, const V2& q, double k) {
-  const MLS::Quadratic_function_space<2> space;
-  MLS::Quadratic_function_space<2>::Parameters c;
+  const MLS::Paraboloid_function_space<2> space;
+  MLS::Paraboloid_function_space<2>::Parameters c;
   c[0] = k;
   const V2 t(n[1], -n[0]); // tangent
   const auto local = [&](const V2& x) { return V2((x - q).dot(t), (x - q).dot(n)); };
@@ -160,7 +160,7 @@ void landscapes() {
     // Default options (Gaussian weight truncated at 4h, h from the 6th neighbours), as in the
     // manual's measurement of the switch.
     const MLS::Levin_projection<K, MLS::Plane_function_space<2>> PL(pts);
-    const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PU(PL.shared_samples());
+    const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PU(PL.shared_samples());
     const double h = PL.bandwidth();
     const MLS::Projection_options o;
     Landscape_setup s{{}, MLS::Weight_function(MLS::Weight_kind::GAUSSIAN, h, o.gaussian_cutoff), h};
@@ -217,7 +217,7 @@ void switch_sweep() {
   for(double phi_deg = 20; phi_deg <= 170 + 1e-9; phi_deg += 0.5) {
     const Wedge wedge{phi_deg * pi / 180, 0.01, 1.};
     const MLS::Levin_projection<K, MLS::Plane_function_space<2>> PL(wedge.sample());
-    const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PU(PL.shared_samples());
+    const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PU(PL.shared_samples());
     const auto rl = PL.project(Point(0, 0));
     const auto ru = PU.project(Point(0, 0));
     const double aL = std::abs(rl.frame.normal.y()), aU = std::abs(ru.frame.normal.y());
@@ -250,7 +250,7 @@ void wedge_reconstruction() {
   const auto pts = wedge.sample();
   const auto o = wendland();
   const MLS::Levin_projection<K, MLS::Polynomial_function_space<2>> PL(pts, o);
-  const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PQ(PL.shared_samples(), o);
+  const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PQ(PL.shared_samples(), o);
   const MLS::Unified_projection<K, MLS::Wedge_fan_function_space<2>> PW(PL.shared_samples(), o);
   const double h = PL.bandwidth();
   auto samples = open_csv("wedge_samples.csv", "x,y,h");
@@ -330,7 +330,7 @@ void noisy_curve_reconstruction() {
   auto o = wendland();
   o.bandwidth = 0.08;
   const MLS::Levin_projection<K, MLS::Polynomial_function_space<2>> PL(pts, o);
-  const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PQ(PL.shared_samples(), o);
+  const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PQ(PL.shared_samples(), o);
   const MLS::Unified_projection<K, MLS::Wedge_fan_function_space<2>> PW(PL.shared_samples(), o);
   const double h = PL.bandwidth();
   auto sf = open_csv("curve_samples.csv", "x,y,h,corner_angle_deg");
@@ -400,7 +400,7 @@ void gap_completion() {
     if(eig(p).norm() > gap) pts.push_back(p);
   MLS::Projection_options o;
   o.bandwidth = 0.07;
-  const MLS::Unified_projection<K, MLS::Quadratic_function_space<2>> PQ(pts, o);
+  const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PQ(pts, o);
   const MLS::Unified_projection<K, MLS::Wedge_fan_function_space<2>> PW(PQ.shared_samples(), o);
   const double h = PQ.bandwidth();
   auto samples = open_csv("gap_samples.csv", "x,y,h,gap");

@@ -55,7 +55,8 @@ namespace MLS {
 /// removed and the rest moved onto the surface. Mesh_3 never moves the centres of its protecting
 /// balls; next to a centre off the surface, its manifold refinement may not end. With polylines,
 /// Mesh_3 starts from their protecting balls, and components of the surface away from them may be
-/// missed (`mls_surface_reconstruction()` inserts the initial points it missed and refines again).
+/// missed (`mls_surface_reconstruction()` inserts the initial points it missed and refines again,
+/// and removes the components of the mesh away from the data or smaller than a facet).
 /// Use an edge size along the polylines of at most 0.75 facet sizes (with larger protecting balls,
 /// the manifold refinement next to close polylines can loop without end), `manifold()`, and no
 /// cell criterion when only the surface is wanted.

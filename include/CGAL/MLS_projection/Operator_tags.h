@@ -17,7 +17,7 @@ struct Levin_operator_tag {};
 /// \ingroup PkgMLSProjectionRef
 /// Selects the unified operator \f$\mathcal{P}_U\f$ (`Unified_projection<K, FunctionSpace>`) for
 /// the named parameter `projection_operator`: `Wedge_fan_function_space<3>` reproduces sampled
-/// creases and corners, `Quadratic_function_space<3>` or `Plane_function_space<3>` fit smooth
+/// creases and corners, `Paraboloid_function_space<3>` or `Plane_function_space<3>` fit smooth
 /// surfaces, and a model of `MLSFunctionSpace` of your own brings its own prior.
 template <class FunctionSpace>
 struct Unified_operator_tag {};

@@ -38,8 +38,8 @@ public:
   using Domain_point = internal::Vec<D - 1>;
   /// @}
 
-  /// The name of the space, `"quadratic"`.
-  static const char* name() { return "quadratic"; }
+  /// The name of the space, `"polynomial"`.
+  static const char* name() { return "polynomial"; }
   /// The number of coefficients: the fit needs as many points.
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters; }
 

@@ -9,7 +9,7 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_options.h>
 #include <CGAL/MLS_projection/Projection_status.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/parameters.h>

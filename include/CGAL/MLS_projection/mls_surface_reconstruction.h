@@ -8,7 +8,7 @@
 #include <CGAL/MLS_projection/Operator_tags.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/internal/reconstruct_surface.h>
@@ -27,9 +27,11 @@ namespace MLS {
 /// \f$f = 0\f$ does not pass through, within the facet distance, are dropped: see
 /// `Meshing_report::off_surface_polylines`; the others are fitted to it), then CGAL's Mesh_3
 /// (manifold output, the polylines protected) or Surface_mesher. A connected component of the mesh
-/// whose median vertex distance to the nearest input point exceeds \f$h/2\f$ is removed (a bubble
-/// of the function's sign away from the data, not a sampled surface; see
-/// `Meshing_report::removed_components`); the component nearest to the data is always kept.
+/// whose median vertex distance to the nearest input point exceeds \f$h/2\f$, or whose bounding
+/// box has a diagonal shorter than the facet size, is removed (a bubble of the function's sign
+/// away from the data or below the mesh's resolution, not a sampled surface; see
+/// `Meshing_report::removed_components`); when every component would go, the one nearest to the
+/// data is kept.
 ///
 /// The average spacing \f$s\f$ is CGAL's `compute_average_spacing` with 6 neighbours.
 ///

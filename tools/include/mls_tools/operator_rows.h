@@ -18,7 +18,7 @@
 #include <CGAL/MLS_projection/Mixed_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/Quadratic_function_space.h>
+#include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/project_points.h>
 #include <CGAL/Simple_cartesian.h>
@@ -141,8 +141,8 @@ Implementation implementation() {
 // The rows: one class per function space, in the columns of function_spaces() (plane,
 // quadratic, wedge, mixed), empty where the operator cannot use the space. Levin's projection
 // and P_S fit a height function over their frame (P_S projects along the frame normal): graph
-// spaces only. "quadratic" is the full degree-2 polynomial for Levin's projection and the
-// paper's principal-curvature quadratic for the closest-point operators; "mixed" fits both the
+// spaces only. "quadratic" is Polynomial_function_space (total degree 2) for Levin's projection
+// and Paraboloid_function_space (the paper's quadratic space) for the closest-point operators; "mixed" fits both the
 // quadratic and the wedge fan and keeps the better (Mixed_projection).
 
 template <int D>
@@ -156,7 +156,7 @@ template <int D>
 Row single_phase_row() {
   using namespace CGAL::MLS;
   return {implementation<Single_phase_projection<Kernel, Plane_function_space<D>>>(),
-          implementation<Single_phase_projection<Kernel, Quadratic_function_space<D>>>(), Implementation(),
+          implementation<Single_phase_projection<Kernel, Paraboloid_function_space<D>>>(), Implementation(),
           Implementation()};
 }
 
@@ -165,7 +165,7 @@ template <int D, CGAL::MLS::Operator_kind kind>
 Row closest_point_row() {
   using namespace CGAL::MLS;
   return {implementation<Closest_point_projection<Kernel, Plane_function_space<D>, kind>>(),
-          implementation<Closest_point_projection<Kernel, Quadratic_function_space<D>, kind>>(),
+          implementation<Closest_point_projection<Kernel, Paraboloid_function_space<D>, kind>>(),
           implementation<Closest_point_projection<Kernel, Wedge_fan_function_space<D>, kind>>(),
           implementation<Mixed_projection<Kernel, D, kind>>()};
 }

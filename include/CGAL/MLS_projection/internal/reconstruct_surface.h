@@ -306,7 +306,7 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
         return fail("empty mesh (no facet on the surface within reach of the data)");
     }
     out.removed_components = remove_unsupported_components(
-      mesh, [&](const auto& q) { return data_distance(to_point(q)); }, 0.5 * h);
+      mesh, [&](const auto& q) { return data_distance(to_point(q)); }, 0.5 * h, in.facet_size);
     if(s.open_surface) {
       std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> cycles;
       Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H
-#define CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H
+#ifndef CGAL_MLS_PROJECTION_PARABOLOID_FUNCTION_SPACE_H
+#define CGAL_MLS_PROJECTION_PARABOLOID_FUNCTION_SPACE_H
 
 #include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
@@ -84,8 +84,11 @@ inline int parabola_stationary_points(double k, double a, double b, double x[3])
 } // namespace internal
 
 /// \ingroup PkgMLSProjectionFunctionSpaces
-/// The quadratic function space of section 4.2 of the paper, in which the closest-point
-/// projection is computed exactly (the space of the unified projection with smooth priors).
+/// The paraboloids with their vertex at the frame's origin and their axis along its normal (in
+/// 2D, parabolas): the quadratic function space of section 4.2 of the paper, in which the
+/// closest-point projection is computed exactly (the space of the unified projection with smooth
+/// priors). Not to be confused with `Polynomial_function_space`, all polynomials of total degree
+/// at most 2, the graph space of Levin's projection.
 ///
 /// - In 2D, \f$f(x) = k x^2\f$, one parameter \f$k\f$. The closest point of \f$(a, b)\f$ is a
 ///   real root of the cubic \f$2k^2x^3 + (1 - 2kb)x - a = 0\f$, solved in closed form
@@ -105,8 +108,8 @@ inline int parabola_stationary_points(double k, double a, double b, double x[3])
 /// \cgalModels `MLSFunctionSpace`
 /// \tparam D the ambient dimension, 2 or 3
 template <int D>
-class Quadratic_function_space {
-  static_assert(D == 2 || D == 3, "Quadratic_function_space: D must be 2 or 3");
+class Paraboloid_function_space {
+  static_assert(D == 2 || D == 3, "Paraboloid_function_space: D must be 2 or 3");
 
 public:
   /// As described by the concept `MLSFunctionSpace`: the ambient dimension, the number of
@@ -118,8 +121,8 @@ public:
   using Domain_point = internal::Vec<D - 1>;
   /// @}
 
-  /// The name of the space, `"quadratic"`.
-  static const char* name() { return "quadratic"; }
+  /// The name of the space, `"paraboloid"`.
+  static const char* name() { return "paraboloid"; }
   /// The number of parameters of the member plus those of the frame (\f$D\f$).
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters + D; }
 
@@ -416,4 +419,4 @@ private:
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_QUADRATIC_FUNCTION_SPACE_H
+#endif // CGAL_MLS_PROJECTION_PARABOLOID_FUNCTION_SPACE_H
