@@ -31,14 +31,10 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -74,7 +70,7 @@ struct Mesher_input {
   double facet_angle = 25;
   /// Mesh_3's edge size along the polylines (0: `facet_size`).
   double edge_size = 0;
-  /// The bisection precision of intersections, relative to the bounding sphere's diameter.
+  /// The precision of the intersections with the surface, relative to the bounding sphere's radius.
   double relative_error_bound = 1e-6;
   /// Progress in [0, 1) over the meshing, polled from the calling thread every 1024 evaluations
   /// of the function; returning `false` stops the mesher (the output is then left empty).
