@@ -44,8 +44,8 @@ namespace MLS {
 /// The domain is empty when the surface is not closed inside the bounding sphere (\f$f \le 0\f$ on
 /// the sphere: the points bound no volume, as coplanar points or an open scan), when \f$f\f$ has
 /// no inside, or when the function is not valid: `is_closed()` is then `false`, and `make_mesh_3()`
-/// returns a complex without facets at once, where it would otherwise refine the sphere's
-/// intersection with the surface without end. Open scans are meshed by
+/// returns a complex without facets at once (its initial points are then four points outside the
+/// domain), where it would otherwise refine the sphere's intersection with the surface without end. Open scans are meshed by
 /// `mls_surface_reconstruction()` with `open_surface`.
 ///
 /// The feature polylines (`feature_polylines()`) are those of `detect_sharp_features()` on the
@@ -159,6 +159,7 @@ public:
     const MLS_mesh_domain_3* domain;
     template <class OutputIterator>
     OutputIterator operator()(OutputIterator pts, const int n = 12) const {
+      if(!domain->closed_) return domain->outside_points(pts);
       int found = 0;
       for(const auto& s : domain->probes_) {
         const Segment_3 segment(s.first, s.second);
@@ -169,7 +170,7 @@ public:
         ++found;
       }
       // Mesh_3's random segments from the centre, which search without end on an empty domain
-      if(found == 0 && domain->closed_) return domain->Base::construct_initial_points_object()(pts, n);
+      if(found == 0) return domain->Base::construct_initial_points_object()(pts, n);
       return pts;
     }
   };
@@ -193,7 +194,7 @@ private:
   explicit MLS_mesh_domain_3(Parts parts)
     : Base(Labeled::create_implicit_mesh_domain(Function{parts.function, parts.monitor}, parts.sphere,
                                                 CGAL::parameters::relative_error_bound = parts.relative_error)),
-      function_{parts.function, parts.monitor},
+      function_{parts.function, parts.monitor}, sphere_(parts.sphere),
       error_(parts.relative_error * std::sqrt(CGAL::to_double(parts.sphere.squared_radius()))),
       probes_(std::move(parts.probes)), polylines_(std::move(parts.polylines)), closed_(parts.closed),
       corners_(parts.corners), off_surface_(parts.off_surface), feature_queries_(parts.feature_queries) {
@@ -229,6 +230,20 @@ private:
       for(const Function_point& p : line) parts.polylines.back().push_back(internal::point_as<Point_3>(p));
     }
     return parts;
+  }
+
+  // The vertices of a tetrahedron in the sphere, outside the domain: on an empty domain, Mesh_3
+  // starts from them (it asserts a triangulation of dimension 2 at least) and ends at once, with
+  // no facet (Mesh_3's own random segments from the centre would search without end).
+  template <class OutputIterator>
+  OutputIterator outside_points(OutputIterator pts) const {
+    const double r = 0.5 * std::sqrt(CGAL::to_double(sphere_.squared_radius()));
+    const Point_3& c = sphere_.center();
+    const auto index = this->index_from_surface_patch_index(typename Base::Surface_patch_index(0, 1));
+    for(const int s : {1, -1})
+      for(const int t : {1, -1})
+        *pts++ = std::make_pair(Point_3(c.x() + s * r, c.y() + t * r, c.z() + s * t * r), index);
+    return pts;
   }
 
   template <class Samples>
@@ -275,6 +290,7 @@ private:
   }
 
   Function function_;
+  Sphere_3 sphere_;
   double error_;
   std::vector<std::pair<Point_3, Point_3>> probes_;
   std::vector<Polyline> polylines_;
