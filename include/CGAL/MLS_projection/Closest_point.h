@@ -17,11 +17,13 @@ namespace MLS {
 /// \tparam D the ambient dimension, 2 or 3
 template <int D>
 struct Closest_point {
+  /// A point or vector in frame coordinates.
+  using Vector = Eigen::Matrix<double, D, 1>;
   /// The closest point of \f$x\f$ on the graph (or fan) of \f$f\f$.
-  internal::Vec<D> point;
+  Vector point;
   /// The unit normal of \f$f\f$ at `point`, on the "up" side (the side of \f$+e_D\f$ for a
   /// graph). At a singular point, the normalised sum of the normals of the adjacent faces.
-  internal::Vec<D> normal;
+  Vector normal;
   /// \f$+|x - \mathrm{point}|\f$ when \f$(x - \mathrm{point})\cdot\mathrm{normal} > 0\f$, else
   /// \f$-|x - \mathrm{point}|\f$: continuous across the surface, the residual of the unified operator.
   double signed_distance = 0;
@@ -30,7 +32,7 @@ struct Closest_point {
   /// The unit direction of the crease through `point` (3D, on a crease, or at an apex that lies
   /// on a crease, as that of a fan whose faces lie in two planes); zero at a corner, at smooth
   /// points and in 2D.
-  internal::Vec<D> direction = internal::Vec<D>::Zero();
+  Vector direction = Vector::Zero();
 };
 
 namespace internal {

@@ -17,6 +17,10 @@
 namespace CGAL {
 namespace MLS {
 
+enum class Operator_kind;
+template <class GeomTraits, class FunctionSpace, Operator_kind kind>
+class Closest_point_projection;
+
 /// \ingroup PkgMLSProjectionOperators
 /// Levin's two-phase MLS projection \f$\mathcal{P}_L\f$ (section 3.1 of the paper).
 ///
@@ -74,20 +78,22 @@ public:
   /// The function space of phase 2.
   const FunctionSpace& function_space() const { return space_; }
 
-  /// The frame of phase 1, in local (centred) coordinates, as used by the operators built on it.
+private:
+  // Phase 1 is also the start of the closest-point operators.
+  template <class, class, Operator_kind>
+  friend class Closest_point_projection;
+
+  // The frame of phase 1, in local (centred) coordinates.
   struct Frame {
-    /// The origin \f$q\f$ and the unit normal \f$n\f$ of the frame.
-    /// @{
-    Vec origin, normal;
-    /// @}
-    int iterations = 0;      ///< iterations of the optimiser
-    bool converged = false;  ///< `false` when the optimiser exhausted its budget
-    Projection_status status = Projection_status::CONVERGED; ///< why phase 1 failed, if it did
+    Vec origin, normal; // the origin q and the unit normal n
+    int iterations = 0;
+    bool converged = false; // false when the optimiser exhausted its budget
+    Projection_status status = Projection_status::CONVERGED; // why phase 1 failed, if it did
   };
 
-  /// Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood
-  /// (the points within the weight's support plus a margin of the frame origin, on the side
-  /// `nbh.side`).
+  // Phase 1 for the query `r` in local coordinates; `nbh` receives the final neighbourhood
+  // (the points within the weight's support plus a margin of the frame origin, on the side
+  // `nbh.side`).
   Frame find_frame(const Vec& r, internal::Neighborhood<D>& nbh) const {
     Frame frame;
     const double h = this->h_, support = this->weight_.support_radius();
@@ -138,6 +144,7 @@ public:
     return frame;
   }
 
+public:
   /// Projects `query` on the MLS curve (2D) or surface (3D).
   Result project(const Point& query) const {
     const Vec r = this->samples().to_local(query);

@@ -9,6 +9,7 @@
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Implicit_function_options.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
+#include <CGAL/MLS_projection/Normal_orientation_report.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_result.h>
@@ -172,7 +173,8 @@ struct Seed_projection<Projection, false> {
 /// the input normals when the sample set has some, otherwise normals estimated with
 /// `pca_estimate_normals` and oriented along a minimum spanning forest of their neighbour graph
 /// that never joins parts on which the free space around the points votes differently, each
-/// tree turned outward as a whole (see `internal::estimate_oriented_normals()`).
+/// tree turned outward as a whole (see the manual, section \ref MLSProjectionMeshing, and
+/// `normals_report()`).
 /// The normal of each local fit is flipped to agree with the oriented normals of the samples
 /// nearest to its projected point (the sign of the sum of the dot products with the 6 nearest).
 ///
@@ -208,7 +210,7 @@ struct Seed_projection<Projection, false> {
 /// corners, where a quadratic cannot follow the data) are projected by the operator; with
 /// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
 /// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
-/// screened operator (`internal::Levin_screened_projection`), also used for the feature detection.
+/// screened operator, also used for the feature detection.
 ///
 /// <b>Gaps.</b> With `complete_gaps` (default), the holes of the sampling get seeds too, as the
 /// paper completes a gap by projection (its Figure 8): a blended seed whose neighbours within
@@ -285,10 +287,17 @@ public:
   using Samples = typename Projection::Samples;
   using Result = Projection_result<Geom_traits, 3>;
   /// @}
-  /// The operator that projects the seeds: `internal::Levin_screened_projection<Projection>` for
-  /// the operators that find creases (the screening can be off: see `Implicit_function_options`),
-  /// `Projection` for the others.
+  /// The operator that projects the seeds: for the operators that find creases, an unspecified
+  /// operator that projects with Levin's operator first and with `Projection` where P_L's fit is
+  /// rejected (see "Screening by P_L"; the screening can be off: see `Implicit_function_options`),
+  /// `Projection` for the others. It has the members of the operators that
+  /// `detect_sharp_features()` and `interpolate_attributes()` use (`project()`, `samples()`,
+  /// `bandwidth()`).
+#ifdef DOXYGEN_RUNNING
+  using Seed_projection_type = unspecified_type;
+#else
   using Seed_projection_type = typename internal::Seed_projection<Projection>::type;
+#endif
 
   /// The state after construction.
   enum class Status {
@@ -436,7 +445,7 @@ public:
   /// `number_of_seeds()`.
   std::size_t number_of_gap_seeds() const { return data_->gap_seeds; }
   /// What the estimation of oriented normals did (all zero when the samples carry normals).
-  const internal::Oriented_normals_report& normals_report() const { return data_->normals_report; }
+  const Normal_orientation_report& normals_report() const { return data_->normals_report; }
 
 private:
   struct Fit {
@@ -470,7 +479,7 @@ private:
     std::size_t operator_seeds = 0;
     double threshold = -1;
     double fallback_threshold = -1; // the largest energy of a P_L fit blended in place of the operator's
-    internal::Oriented_normals_report normals_report;
+    Normal_orientation_report normals_report;
     Sphere_3 sphere;
     Point_3 inner_point;
     Status status = Status::VALID;

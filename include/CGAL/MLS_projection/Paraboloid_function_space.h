@@ -118,7 +118,8 @@ public:
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = (D == 2) ? 1 : 3;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
-  using Domain_point = internal::Vec<D - 1>;
+  using Vector = Eigen::Matrix<double, D, 1>; ///< a point or vector in frame coordinates
+  using Domain_point = Eigen::Matrix<double, D - 1, 1>;
   /// @}
 
   /// The name of the space, `"paraboloid"`.
@@ -133,7 +134,7 @@ public:
   /// quadratic polynomial (`Polynomial_function_space<D>`); the lower-order terms are dropped
   /// since the operator also optimises the frame. In 3D, \f$(a, b, \theta)\f$ come from the
   /// eigen-decomposition of the Hessian \f$[[c_3, c_4/2], [c_4/2, c_5]]\f$.
-  Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
+  Parameters fit(const Vector* p, const double* w, std::size_t n) const {
     const auto c = Polynomial_function_space<D>().fit(p, w, n);
     Parameters r;
     if constexpr(D == 2) {
@@ -178,11 +179,11 @@ public:
 
   /// The point \f$(u, f(u))\f$ of the graph above or below `x = (u, z)`, with its normal
   /// (for `Single_phase_projection`).
-  Closest_point<D> vertical_projection(const Parameters& c, const internal::Vec<D>& x) const {
+  Closest_point<D> vertical_projection(const Parameters& c, const Vector& x) const {
     Closest_point<D> cp;
     const Domain_point u = x.template head<D - 1>();
     cp.point << u, height(c, u);
-    internal::Vec<D> g;
+    Vector g;
     if constexpr(D == 2) {
       g << -2. * c[0] * u[0], 1.;
     } else {
@@ -197,7 +198,7 @@ public:
   }
 
   /// The closest point of `x` (frame coordinates) on the graph of the member `c`.
-  Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
+  Closest_point<D> closest_point(const Parameters& c, const Vector& x) const {
     if constexpr(D == 2) return closest_point_2(c[0], x);
     else return closest_point_3(c[0], c[1], c[2], x);
   }
@@ -206,7 +207,7 @@ public:
   /// null, the derivatives of their signed distances with respect to \f$c\f$: by the envelope
   /// theorem, \f$-g \cdot \partial S/\partial c\f$ at the closest point \f$S\f$, with
   /// \f$g = (x - S)/d\f$ (the normal when \f$d = 0\f$).
-  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+  void closest_points(const Parameters& c, const Vector* x, std::size_t n, Closest_point<D>* out,
                       Parameters* gradients) const {
     const double theta = D == 3 ? c[D == 3 ? 2 : 0] : 0.; // the angle of the principal axes (3D)
     const double ct = std::cos(theta), st = std::sin(theta);
@@ -214,9 +215,9 @@ public:
       out[i] = closest_point(c, x[i]);
       if(!gradients) continue;
       const Closest_point<D>& cp = out[i];
-      internal::Vec<D> g = cp.normal;
+      Vector g = cp.normal;
       if(std::abs(cp.signed_distance) > 0.) g = (x[i] - cp.point) / cp.signed_distance;
-      const internal::Vec<D>& S = cp.point;
+      const Vector& S = cp.point;
       if constexpr(D == 2) {
         gradients[i][0] = -g[1] * S[0] * S[0];
       } else {

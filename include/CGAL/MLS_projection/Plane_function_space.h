@@ -29,7 +29,8 @@ public:
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = 0;
   using Parameters = Eigen::Matrix<double, 0, 1>;
-  using Domain_point = internal::Vec<D - 1>;
+  using Vector = Eigen::Matrix<double, D, 1>; ///< a point or vector in frame coordinates
+  using Domain_point = Eigen::Matrix<double, D - 1, 1>;
   /// @}
 
   /// The name of the space, `"plane"`.
@@ -39,7 +40,7 @@ public:
 
   /// The member fitted to `n` points in frame coordinates (the first `D-1` coordinates in the
   /// tangent hyperplane, the last along the normal) with weights `w`: always \f$f = 0\f$.
-  Parameters fit(const internal::Vec<D>*, const double*, std::size_t) const { return Parameters(); }
+  Parameters fit(const Vector*, const double*, std::size_t) const { return Parameters(); }
   /// \f$f(u)\f$
   double height(const Parameters&, const Domain_point&) const { return 0.; }
   /// \f$\nabla f(u)\f$
@@ -50,24 +51,24 @@ public:
 
   /// The orthogonal projection of `x` (frame coordinates) onto the hyperplane \f$x_D = 0\f$:
   /// normal \f$e_D\f$, signed distance \f$x_D\f$, never singular.
-  Closest_point<D> closest_point(const Parameters&, const internal::Vec<D>& x) const {
+  Closest_point<D> closest_point(const Parameters&, const Vector& x) const {
     Closest_point<D> cp;
     cp.point = x;
     cp.point[D - 1] = 0.;
-    cp.normal = internal::Vec<D>::Unit(D - 1);
+    cp.normal = Vector::Unit(D - 1);
     cp.signed_distance = x[D - 1];
     return cp;
   }
 
   /// The closest points of the `n` points `x` (no parameters, hence no gradients).
-  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+  void closest_points(const Parameters& c, const Vector* x, std::size_t n, Closest_point<D>* out,
                       Parameters*) const {
     for(std::size_t i = 0; i < n; ++i) out[i] = closest_point(c, x[i]);
   }
 
   /// The point of the graph above or below `x` (for `Single_phase_projection`): here the same
   /// as `closest_point()`.
-  Closest_point<D> vertical_projection(const Parameters& c, const internal::Vec<D>& x) const {
+  Closest_point<D> vertical_projection(const Parameters& c, const Vector& x) const {
     return closest_point(c, x);
   }
 };

@@ -35,7 +35,8 @@ public:
   static constexpr int ambient_dimension = D;
   static constexpr int number_of_parameters = (D == 2) ? 3 : 6;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
-  using Domain_point = internal::Vec<D - 1>;
+  using Vector = Eigen::Matrix<double, D, 1>; ///< a point or vector in frame coordinates
+  using Domain_point = Eigen::Matrix<double, D - 1, 1>;
   /// @}
 
   /// The name of the space, `"polynomial"`.
@@ -44,7 +45,7 @@ public:
   static constexpr std::size_t minimum_number_of_points() { return number_of_parameters; }
 
   /// The weighted least-squares fit to `n` points in frame coordinates with weights `w`.
-  Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
+  Parameters fit(const Vector* p, const double* w, std::size_t n) const {
     using Matrix = Eigen::Matrix<double, number_of_parameters, number_of_parameters>;
     // Scale the domain to unit weighted spread for a well-conditioned system.
     double sw = 0, su = 0;

@@ -69,6 +69,7 @@ public:
   static constexpr int number_of_vectors = (D == 2) ? 2 : N;
   static constexpr int number_of_parameters = (D == 2) ? 2 : 2 * N;
   using Parameters = Eigen::Matrix<double, number_of_parameters, 1>;
+  using Vector = Eigen::Matrix<double, D, 1>; ///< a point or vector in frame coordinates
   /// @}
 
   /// The tolerance on the normals of two adjacent cones under which they are one plane.
@@ -113,7 +114,7 @@ public:
   /// (longitudes within \f$\pi/N\f$), or of all points when the sector has too few: a plane through
   /// the origin is reproduced exactly (zero latitudes for a level one, the paper's initial
   /// estimate), and an edge through the origin along the first axis approximately.
-  Parameters fit(const internal::Vec<D>* p, const double* w, std::size_t n) const {
+  Parameters fit(const Vector* p, const double* w, std::size_t n) const {
     // the least-squares plane through the origin, z = g . u
     using M = Eigen::Matrix<double, D - 1, D - 1>;
     using U = Eigen::Matrix<double, D - 1, 1>;
@@ -178,7 +179,7 @@ public:
   /// (two), or along the three pairwise intersections (three); further vectors bisect the
   /// widest angle between consecutive rays, which both lie in one plane. Returns false when the
   /// hyperplanes are within about 0.6 degrees of parallel or the fan has too few vectors.
-  bool member_of_hyperplanes(const internal::Vec<D>* normals, int k, Parameters& c) const {
+  bool member_of_hyperplanes(const Vector* normals, int k, Parameters& c) const {
     constexpr double tolerance = 1e-2;
     if constexpr(D == 2) {
       if(k != 2) return false;
@@ -248,13 +249,13 @@ public:
   }
 
   /// The unit vector of latitude `lat` and longitude `lon`.
-  static internal::Vec<3> direction(double lat, double lon) {
+  static Eigen::Vector3d direction(double lat, double lon) {
     const double cl = std::cos(lat);
-    return internal::Vec<3>(cl * std::cos(lon), cl * std::sin(lon), std::sin(lat));
+    return Eigen::Vector3d(cl * std::cos(lon), cl * std::sin(lon), std::sin(lat));
   }
 
   /// The closest point of `x` (frame coordinates) on the fan `c`.
-  Closest_point<D> closest_point(const Parameters& c, const internal::Vec<D>& x) const {
+  Closest_point<D> closest_point(const Parameters& c, const Vector& x) const {
     return project(prepare(c), x, nullptr);
   }
 
@@ -263,9 +264,9 @@ public:
   /// (the derivatives zero) where they are one-sided, the closest point moving onto a face beside
   /// its piece when the fan or `x` moves: at the apex; in 3D, on a ray between two coplanar cones,
   /// or on a crease ray with `x` on the fan (within \f$10^{-7}(1 + |x|)\f$).
-  bool closest_point_derivatives(const Parameters& c, const internal::Vec<D>& x, Closest_point<D>& cp,
+  bool closest_point_derivatives(const Parameters& c, const Vector& x, Closest_point<D>& cp,
                                  Eigen::Matrix<double, D, number_of_parameters>& d_parameters,
-                                 internal::Mat<D>& d_point) const {
+                                 Eigen::Matrix<double, D, D>& d_point) const {
     const Fan f = prepare(c);
     std::array<double, number_of_vectors> coef;
     coef.fill(0.);
@@ -308,14 +309,14 @@ public:
   /// when `gradients` is not null, the derivatives of their signed distances with respect to
   /// the parameters: by the envelope theorem, \f$-g \cdot \partial S/\partial c\f$ at the closest
   /// point \f$S\f$, with \f$g = (x - S)/d\f$ (the normal when \f$d = 0\f$).
-  void closest_points(const Parameters& c, const internal::Vec<D>* x, std::size_t n, Closest_point<D>* out,
+  void closest_points(const Parameters& c, const Vector* x, std::size_t n, Closest_point<D>* out,
                       Parameters* gradients) const {
     const Fan fan = prepare(c);
     for(std::size_t i = 0; i < n; ++i) out[i] = project(fan, x[i], gradients ? gradients + i : nullptr);
   }
 
 private:
-  using V = internal::Vec<D>;
+  using V = Vector;
 
   static double wrap(double t, double lo) { // t modulo 2 pi, in [lo, lo + 2 pi)
     double r = t - 2. * CGAL_PI * std::floor((t - lo) / (2. * CGAL_PI));
@@ -410,7 +411,7 @@ private:
   // The derivatives of the foot x - (x . n) n on the plane of the cone (v[j], v[k]), n = u / |u|,
   // u = v[j] x v[k].
   static void cone_derivatives(const Fan& f, const V& x, int j, int k,
-                               Eigen::Matrix<double, D, number_of_parameters>& d_parameters, internal::Mat<D>& d_point) {
+                               Eigen::Matrix<double, D, number_of_parameters>& d_parameters, Eigen::Matrix<double, D, D>& d_point) {
     if constexpr(D == 3) {
       const V u = f.v[j].cross(f.v[k]);
       const double len = u.norm();
@@ -422,7 +423,7 @@ private:
           const V dn = (du - n * n.dot(du)) / len;
           d_parameters.col(2 * f.order[side == 0 ? j : k] + a) = -x.dot(dn) * n - xn * dn;
         }
-      d_point = internal::Mat<D>::Identity() - n * n.transpose();
+      d_point = Eigen::Matrix<double, D, D>::Identity() - n * n.transpose();
     }
   }
 

@@ -9,6 +9,7 @@
 #ifndef CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 #define CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
 
+#include <CGAL/MLS_projection/Normal_orientation_report.h>
 #include <CGAL/MLS_projection/internal/Dimension.h>
 #include <CGAL/MLS_projection/internal/Point_tree.h>
 #include <CGAL/MLS_projection/internal/outside_votes.h>
@@ -32,23 +33,6 @@
 namespace CGAL {
 namespace MLS {
 namespace internal {
-
-/// What `estimate_oriented_normals()` did.
-struct Oriented_normals_report {
-  /// Points oriented along the spanning forest (in a tree of at least two points).
-  std::size_t oriented_by_mst = 0;
-  /// Points without a usable neighbour (trees of one point), oriented away from the centroid.
-  std::size_t oriented_by_fallback = 0;
-  /// Points whose estimated normal was not finite or null, replaced by the direction from the
-  /// centroid (or +z when the point is the centroid).
-  std::size_t replaced = 0;
-  /// Trees of the spanning forest (the connected parts of the neighbour graph).
-  std::size_t components = 0;
-  /// Trees turned over by their votes or by the outwardness test (step 4).
-  std::size_t flipped_components = 0;
-  /// `false` when cancelled by the callback.
-  bool completed = true;
-};
 
 /// Estimates unit normals of `points` and orients them consistently; returns one normal per point
 /// in `normals` (same order).
@@ -89,7 +73,7 @@ struct Oriented_normals_report {
 /// `progress` (may be empty) receives fractions in [0, 1]; returning `false` cancels
 /// (`completed` is then `false` and `normals` is left empty).
 template <class ConcurrencyTag, class GeomTraits>
-Oriented_normals_report estimate_oriented_normals(const std::vector<typename GeomTraits::Point_3>& points,
+Normal_orientation_report estimate_oriented_normals(const std::vector<typename GeomTraits::Point_3>& points,
                                                   std::vector<typename GeomTraits::Vector_3>& normals, unsigned int k,
                                                   const std::function<bool(double)>& progress = {},
                                                   bool split_by_votes = true) {
@@ -98,7 +82,7 @@ Oriented_normals_report estimate_oriented_normals(const std::vector<typename Geo
   using Item = std::pair<Point, Vector>;
   using Point_map = CGAL::First_of_pair_property_map<Item>;
   using Normal_map = CGAL::Second_of_pair_property_map<Item>;
-  Oriented_normals_report report;
+  Normal_orientation_report report;
   normals.clear();
   const std::size_t n = points.size();
   if(n == 0) return report;
