@@ -45,8 +45,8 @@ namespace MLS {
 /// the sphere: the points bound no volume, as coplanar points or an open scan), when \f$f\f$ has
 /// no inside, or when the function is not valid: `is_closed()` is then `false`, and `make_mesh_3()`
 /// returns a complex without facets at once (its initial points are then four points outside the
-/// domain), where it would otherwise refine the sphere's intersection with the surface without end. Open scans are meshed by
-/// `mls_surface_reconstruction()` with `open_surface`.
+/// domain), where it would otherwise refine the sphere's intersection with the surface without
+/// end. Open scans are meshed by `mls_surface_reconstruction()` with `open_surface`.
 ///
 /// The feature polylines (`feature_polylines()`) are those of `detect_sharp_features()` on the
 /// seeds' projections, fitted to \f$f = 0\f$ (see the manual, section
