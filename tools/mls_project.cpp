@@ -192,7 +192,7 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "  wedge: a wedge fan (two rays in 2D, 4 infinite triangles around an apex in 3D): reproduces\n"
        "    creases and corners exactly. Not a graph: enriched and unified only.\n"
        "  mixed: levin's full quadratic for every query, and a wedge fit (with the operator) only where\n"
-       "    the quadratic leaves more than the noise level of the data unexplained; the wedge is kept\n"
+       "    the quadratic's RMS residual is more than twice the noise of the data; the wedge is kept\n"
        "    when its energy is below 0.5 x the quadratic's, so that smooth parts keep the quadratic's\n"
        "    accuracy and cost, and creases the wedge's. Enriched and unified only.\n";
   std::string cannot; // the operators that cannot use the default space

@@ -763,6 +763,44 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
   }
 }
 
+// On noisy data the mixed space is not worse than P_L, its smooth half: on a cube sampled with
+// Gaussian noise of a quarter and of 0.45 of the spacing (the noise of scanners), over every third
+// sample, its worst distance to the cube is at most P_L's and its RMS distance at most 1% above
+// (measured: 24% and 3% below P_L's at a quarter spacing; equal and 0.1% above at 0.45, where it
+// keeps 4 fans). The fan is kept only where the quadratic leaves 4 times the noise variance; with
+// 2.5 times, at 0.45 spacing, the worst distance was 4.4% and the RMS distance 3.8% above P_L's.
+MLS_TEST(mixed_space_is_not_worse_than_levin_on_a_noisy_cube) {
+  const double s = 0.025;
+  for(double noise : {0.25, 0.45}) {
+    std::mt19937 gen(5);
+    std::normal_distribution<double> g(0., noise * s);
+    std::vector<Epick::Point_3> pts;
+    for(const Epick::Point_3& p : cube(s)) {
+      const V3 e = mls_test::random_vector(g, gen);
+      pts.emplace_back(p.x() + e[0], p.y() + e[1], p.z() + e[2]);
+    }
+    const MLS::Mixed_projection<Epick, 3> PM(pts);
+    double sum[2] = {0, 0}, worst[2] = {0, 0};
+    int queries = 0, fan = 0;
+    for(std::size_t i = 0; i < pts.size(); i += 3, ++queries) {
+      const auto smooth = PM.smooth_projection().project(pts[i]);
+      const auto mixed = PM.project(pts[i]);
+      MLS_CHECK(smooth.is_success() && mixed.is_success());
+      fan += mixed.coefficients.size() == 8;
+      const double d[2] = {cube_distance(eig(smooth.point)), cube_distance(eig(mixed.point))};
+      for(int k = 0; k < 2; ++k) {
+        sum[k] += d[k] * d[k];
+        worst[k] = std::max(worst[k], std::abs(d[k]));
+      }
+    }
+    const double rms[2] = {std::sqrt(sum[0] / queries), std::sqrt(sum[1] / queries)};
+    std::cout << "  noisy cube, noise " << noise << " spacing: P_L RMS " << rms[0] << " max " << worst[0]
+              << ", mixed RMS " << rms[1] << " max " << worst[1] << " (fan kept for " << fan << "/" << queries << ")\n";
+    MLS_CHECK_LE(rms[1], 1.01 * rms[0]);
+    MLS_CHECK_LE(worst[1], worst[0]);
+  }
+}
+
 // An isolated point above a sampled plane: the fan can pass through it, with the weights centred
 // on it and the plane's points too far to count (an exact fit of one point). Such a fit counts
 // fewer than 2 effective points and is rejected: P_U(wedge) fails there (2 h above the plane and
@@ -814,7 +852,7 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     // measured 0.94 to 0.98 over seeds: the quadratic of 12 points leans towards their noise (a
     // bias of -4% at this noise), and the first quartile of 400 neighbourhoods varies by about 2%
     MLS_CHECK(ratio >= 0.9 && ratio <= 1.05);
-    MLS_CHECK_NEAR(PM.screening_threshold(), 2.5 * PM.noise_variance(), 1e-12 * PM.screening_threshold());
+    MLS_CHECK_NEAR(PM.screening_threshold(), 4 * PM.noise_variance(), 1e-12 * PM.screening_threshold());
     // sigma is about h / 9, above h / 20: the fan is fitted over the whole bandwidth
     MLS_CHECK(PM.sharp_bandwidth() == PM.bandwidth());
   }
@@ -838,9 +876,9 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     const std::vector<Epick::Point_3> sphere = fibonacci_sphere(4000);
     MLS::Mixed_projection<Epick, 3> PM(sphere);
     const double h = PM.bandwidth();
-    std::cout << "  noiseless sphere: 2.5 x estimated variance / (0.01 h)^2 = "
-              << 2.5 * PM.noise_variance() / ((0.01 * h) * (0.01 * h)) << "\n";
-    MLS_CHECK_LE(2.5 * PM.noise_variance(), (0.01 * h) * (0.01 * h));
+    std::cout << "  noiseless sphere: 4 x estimated variance / (0.01 h)^2 = "
+              << 4 * PM.noise_variance() / ((0.01 * h) * (0.01 * h)) << "\n";
+    MLS_CHECK_LE(4 * PM.noise_variance(), (0.01 * h) * (0.01 * h));
   }
 }
 

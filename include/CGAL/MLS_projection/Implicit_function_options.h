@@ -45,13 +45,6 @@ struct Implicit_function_options {
   /// corners) to the operator (see `MLS_implicit_function`, "Screening by P_L"). `false`: the
   /// operator projects every seed (10 to 200 ms each).
   bool levin_screening = true;
-  /// The screening keeps P_L's fit when its weighted RMS residual is at most this (units of
-  /// \f$h\f$)...
-  double screening_residual = 0.01;
-  /// ... or at most this factor times the estimated RMS of the noise (see
-  /// `Mixed_projection::noise_variance()`; the default is the mixed operator's margin,
-  /// \f$\sqrt{2.5}\f$, so that a seed gets the fit the mixed operator would give it).
-  double screening_noise_factor = 1.58;
   /// Where the operator's fit of a seed is not blended (see `MLS_implicit_function`, "Seeds"),
   /// P_L's fit of the seed is blended in its place when its weighted RMS residual is at most this
   /// factor times the estimated RMS of the noise (about 0 without noise, so that no crease is

@@ -16,6 +16,7 @@
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/internal/Lattice_value_cache.h>
 #include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/noise_level.h>
 #include <CGAL/MLS_projection/internal/oriented_normals.h>
 #include <CGAL/MLS_projection/project_points.h>
 
@@ -203,10 +204,9 @@ struct Seed_projection<Projection, false> {
 /// projected by Levin's operator \f$\mathcal{P}_L\f$ with a quadratic (some 0.3 ms, against 10
 /// to 200 ms for the closest-point operators), and its fit is kept where it explains the data:
 /// where its energy (weighted mean squared residual) is at most
-/// \f$\max\big((\rho h)^2, \kappa^2 \hat\sigma^2\big)\f$, with \f$\rho\f$ = `screening_residual`,
-/// \f$\kappa\f$ = `screening_noise_factor` and \f$\hat\sigma^2\f$ the variance of the noise estimated
-/// from the input (`Mixed_projection::noise_variance()`; with the defaults, the threshold is the
-/// mixed operator's own). The other seeds (near creases and
+/// \f$\max\big((0.01 h)^2, 2.5 \hat\sigma^2\big)\f$, with \f$\hat\sigma^2\f$ the variance of the noise
+/// estimated from the input (see `Mixed_projection`, whose margin over the noise is 4, not 2.5: a
+/// seed's fan also carries its crease to the feature detection). The other seeds (near creases and
 /// corners, where a quadratic cannot follow the data) are projected by the operator; with
 /// `Mixed_projection`, by its sharp operator only, the fan being kept when it beats P_L's
 /// quadratic by the mixed operator's rule (`prefers_sharp()`). `seed_projection()` is that
@@ -907,8 +907,7 @@ private:
       const Seed_projection_type probe(d.projection, 0.);
       if(!project_all(probe.levin(), queries, results, 0., 0.05)) return false;
       const double noise = internal::noise_variance(d.projection);
-      const double rho = d.options.screening_residual * d.h, kappa = d.options.screening_noise_factor;
-      d.threshold = (std::max)(rho * rho, kappa * kappa * noise);
+      d.threshold = internal::screening_threshold(d.h, noise, internal::seed_noise_margin);
       const double lambda = d.options.fallback_noise_factor;
       d.fallback_threshold = (std::max)(d.threshold, lambda * lambda * noise);
       d.seed_projection.emplace(d.projection, d.threshold);

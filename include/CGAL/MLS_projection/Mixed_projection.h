@@ -29,9 +29,10 @@ namespace MLS {
 ///    the residuals of the 12 nearest neighbours of up to 512 input points about their
 ///    least-squares quadratic, at a scale where coarse samplings of creased shapes still have
 ///    points away from every crease),
-///    \f$\kappa^2 = 2.5\f$ (a margin over the spread of \f$\mathcal{P}_L\f$'s energies on noisy
-///    smooth parts, chosen on the benchmark's scans) and \f$\rho = 0.01\f$ (on noiseless data, a
-///    residual of a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts).
+///    \f$\kappa^2 = 4\f$ (below it, on the benchmark's noisy scans, the fan lands nearer to the
+///    surface than the quadratic on only half of the queries, and further off on the worst ones)
+///    and \f$\rho = 0.01\f$ (on noiseless data, a residual of a hundredth of \f$h\f$ is what the
+///    quadratic leaves on curved smooth parts).
 /// 2. <b>Model selection.</b> Where the fan is tried, it is kept only when it explains the data
 ///    clearly better than the quadratic, \f$E_{\mathrm{sharp}} < \sigma\, E_{\mathrm{smooth}}\f$,
 ///    \f$\sigma\f$ = `sharp_preference` (default 0.5). The ratio is the complexity penalty: the
@@ -98,7 +99,8 @@ public:
   explicit Mixed_projection(std::shared_ptr<const Samples> samples, const Projection_options& options = Projection_options(),
                             double sharp_preference = default_sharp_preference)
     : smooth_(samples, options), sharp_preference_(sharp_preference),
-      noise_variance_(internal::estimate_noise_variance(*samples)), threshold_(noise_threshold(bandwidth(), noise_variance_)),
+      noise_variance_(internal::estimate_noise_variance(*samples)),
+      threshold_(internal::screening_threshold(bandwidth(), noise_variance_, internal::projection_noise_margin)),
       sharp_(samples, with_bandwidth(options, sharp_bandwidth(*samples, bandwidth(), smooth_.weight(), noise_variance_))) {
     CGAL_precondition(sharp_preference > 0 && sharp_preference <= 1);
   }
@@ -170,12 +172,6 @@ private:
   static Projection_options with_bandwidth(Projection_options options, double h) {
     if(h > 0) options.bandwidth = h; // derived once, by the smooth operator
     return options;
-  }
-
-  // max((rho h)^2, kappa^2 sigma^2) of the class documentation.
-  static double noise_threshold(double h, double noise_variance) {
-    constexpr double rho = 0.01, kappa2 = 2.5;
-    return (std::max)((rho * h) * (rho * h), kappa2 * noise_variance);
   }
 
   // h_s of the class documentation, given h and the smooth operator's weight (0 without h).
