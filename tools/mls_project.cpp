@@ -192,9 +192,9 @@ void print_help(const mls_tools::Argument_parser& parser) {
        "  wedge: a wedge fan (two rays in 2D, 4 infinite triangles around an apex in 3D): reproduces\n"
        "    creases and corners exactly. Not a graph: enriched and unified only.\n"
        "  mixed: levin's full quadratic for every query, and a wedge fit (with the operator) only where\n"
-       "    the quadratic's RMS residual is more than twice the noise of the data; the wedge is kept\n"
-       "    when its energy is below 0.5 x the quadratic's, so that smooth parts keep the quadratic's\n"
-       "    accuracy and cost, and creases the wedge's. Enriched and unified only.\n";
+       "    the quadratic's RMS residual is more than twice the noise of the data (or 0.01 h); the\n"
+       "    wedge is kept when its energy is below 0.5 x the quadratic's, so that smooth parts keep the\n"
+       "    quadratic's accuracy and cost, and creases the wedge's. Enriched and unified only.\n";
   std::string cannot; // the operators that cannot use the default space
   for(const auto& e : operators())
     if(!can_use(e, space_index(default_space))) cannot += (cannot.empty() ? "" : ", ") + std::string(e.name);

@@ -801,7 +801,7 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
 MLS_TEST(weight_derivatives) {
   const double h = 0.3;
   for(const MLS::Weight_kind kind : {MLS::Weight_kind::POLYNOMIAL, MLS::Weight_kind::GAUSSIAN, MLS::Weight_kind::WENDLAND}) {
-    const MLS::Weight_function w(kind, h, kind == MLS::Weight_kind::GAUSSIAN ? 4. : 2.5);
+    const MLS::Weight_function w(kind, h);
     const double R2 = w.support_radius() * w.support_radius();
     double worst = 0, worst_second = 0;
     for(double t = 0.01; t < 1; t += 0.01) {

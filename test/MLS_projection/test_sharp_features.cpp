@@ -224,8 +224,8 @@ MLS_TEST(noiseless_cube_mixed_gives_12_edges_and_8_corners) {
 // those of local fits to noisy points, about 0.05 h off (measured 0.052 h). The tolerance, 0.1 h,
 // is below the clustering spacing (0.25 h), so a vertex chained from the wrong crease or a corner
 // merged from the wrong apex fails it. The detection is fragile under more noise (issue of noisy
-// scans; manual, section "Sharp Features"): over the samplings of seeds 2 to 4, at this noise one
-// of three gets a 13th polyline; at 0.08 to 0.12 spacing, one or two lose an end or a corner; at
+// scans; manual, section "Sharp Features"): over the samplings of seeds 2 to 4, at this noise
+// seed 3's gets a 13th polyline; at 0.08 to 0.12 spacing, one or two lose an end or a corner; at
 // 0.16 spacing, two of three miss an edge and a corner.
 MLS_TEST(noisy_cube_gives_12_edges_and_8_corners) {
   const double sigma = 0.0025;

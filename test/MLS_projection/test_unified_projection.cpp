@@ -768,7 +768,7 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
 // sample, its worst distance to the cube is at most P_L's and its RMS distance at most 1% above
 // (measured: 24% and 3% below P_L's at a quarter spacing; equal and 0.1% above at 0.45, where it
 // keeps 4 fans). The fan is kept only where the quadratic leaves 4 times the noise variance; with
-// 2.5 times, at 0.45 spacing, the worst distance was 4.4% and the RMS distance 3.8% above P_L's.
+// a margin of 2.5, at 0.45 spacing, the worst distance is 4.4% and the RMS distance 3.8% above P_L's.
 MLS_TEST(mixed_space_is_not_worse_than_levin_on_a_noisy_cube) {
   const double s = 0.025;
   for(double noise : {0.25, 0.45}) {

@@ -162,8 +162,7 @@ void landscapes() {
     const MLS::Levin_projection<K, MLS::Plane_function_space<2>> PL(pts);
     const MLS::Unified_projection<K, MLS::Paraboloid_function_space<2>> PU(PL.shared_samples());
     const double h = PL.bandwidth();
-    const MLS::Projection_options o;
-    Landscape_setup s{{}, MLS::Weight_function(MLS::Weight_kind::GAUSSIAN, h, o.gaussian_cutoff), h};
+    Landscape_setup s{{}, MLS::Weight_function(MLS::Weight_kind::GAUSSIAN, h), h};
     for(const Point& p : pts)
       if(eig(p).norm() < 12 * h) s.p.push_back(eig(p)); // the rest has zero weight on the grid
     const int nt = 121, nr = 81;

@@ -945,7 +945,6 @@ protected:
       X x0 = X::Zero();
       for(int j = 0; j < P; ++j) x0[F + j] = c0[j];
       Minimizer_settings settings;
-      settings.tolerance = this->options_.tolerance;
       // An exact fit stops at once. On noisy data, the energy has long, nearly flat valleys
       // (moving the origin tangentially while tilting the frame and bending the function changes
       // the surface near C(r) very little), along which the steps would crawl for hundreds of

@@ -28,31 +28,19 @@ struct Implicit_function_options {
   /// The seeds are the input samples thinned on a grid of this cell size (units of \f$h\f$):
   /// one seed per occupied cell. 0: every input sample is a seed.
   double seed_spacing = 0.5;
-  /// The number of nearest seeds blended by the partition of unity (clamped to [2, 63]).
-  int blend_neighbors = 8;
   /// Beyond this distance from the nearest seed (units of \f$h\f$), the value is blended
   /// towards the far value (distance to the nearest seed, signed by its local fit near the
   /// seed)...
   double far_start = 1.;
   /// ... which it reaches at this distance (units of \f$h\f$). The local fits are the
   /// surface within about \f$h\f$ of their data; further out, a wedge fan's sign is less reliable
-  /// than the far value's (measured on the built-in solid, 11810 points, with the check of the fits
-  /// at its earlier tolerance of 2%: of 112762 points of a grid of step h/2 at least h/2 off the
-  /// surface, 1 had the wrong sign with 1 and 2, 4 with 1.5 and 3).
+  /// than the far value's. `mls_surface_reconstruction()` moves both out for an open surface.
   double far_end = 2.;
   /// With an operator that finds creases (the wedge fan, alone or mixed): project every seed with
   /// Levin's operator first and hand only the seeds its quadratic cannot fit (near creases and
   /// corners) to the operator (see `MLS_implicit_function`, "Screening by P_L"). `false`: the
   /// operator projects every seed (10 to 200 ms each).
   bool levin_screening = true;
-  /// Where the operator's fit of a seed is not blended (see `MLS_implicit_function`, "Seeds"),
-  /// P_L's fit of the seed is blended in its place when its weighted RMS residual is at most this
-  /// factor times the estimated RMS of the noise (about 0 without noise, so that no crease is
-  /// rounded by a quadratic), and it passes the same test. 0: never.
-  double fallback_noise_factor = 3.;
-  /// The number of neighbours of the normal estimation and orientation (when the samples carry
-  /// no normals): `pca_estimate_normals` and the orientation's neighbour graph.
-  int normal_neighbors = 18;
   /// Project seeds into the gaps of the sampling (holes of a scan up to about \f$4h\f$ across),
   /// so that the local fits make the surface there (see `MLS_implicit_function`, "Gaps").
   /// `mls_surface_reconstruction()` turns it off for an open surface, which ends where its

@@ -117,7 +117,6 @@ private:
       return State{internal::exp_map<D>(st.n, basis, delta), st.s + delta[D - 1]};
     };
     internal::Newton_settings settings;
-    settings.step_tolerance = std::sqrt(this->options_.tolerance);
     settings.max_evaluations = this->options_.max_evaluations;
     for(int round = 0; round < 5; ++round) {
       if(nbh.size() < minimum_points()) {

@@ -195,7 +195,7 @@ struct Seed_projection<Projection, false> {
 /// fit noise (crumpled, in tilted frames). Where the operator's fit of a seed is dropped or its
 /// projection failed, P_L's fit of the seed (computed by the screening, below) is blended in its
 /// place when it passes the same test and its energy is at most \f$\mu^2 \hat\sigma^2\f$ (\f$\mu\f$ =
-/// `fallback_noise_factor`, \f$\hat\sigma^2\f$ as below): a fit of noise, not of a crease, which it
+/// 3, \f$\hat\sigma^2\f$ as below): a fit of noise, not of a crease, which it
 /// would round. On noiseless data \f$\hat\sigma^2\f$ is about 0 and no seed falls back; on noisy
 /// data, many.
 ///
@@ -224,7 +224,7 @@ struct Seed_projection<Projection, false> {
 /// sides, and a crease across it continues, instead of the far value.
 ///
 /// <b>Evaluation, `LOCAL_FITS` (default).</b> With \f$s_1, \dots, s_{k+1}\f$ the \f$k+1\f$ nearest
-/// seeds of \f$x\f$ (\f$k\f$ = `blend_neighbors`) and \f$R\f$ the distance to the last,
+/// seeds of \f$x\f$ (\f$k\f$ = 8) and \f$R\f$ the distance to the last,
 /// \f[ f_{\mathrm{fit}}(x) = \frac{\sum_{i \le k} \phi(|x - s_i|/R)\, d_i(x)}{\sum_{i \le k} \phi(|x - s_i|/R)}, \f]
 /// with \f$\phi\f$ Wendland's \f$C^2\f$ function (compact support: the weight of a seed vanishes
 /// when it leaves the \f$k+1\f$ nearest, so \f$f\f$ is continuous) and \f$d_i(x)\f$ the signed
@@ -271,6 +271,12 @@ class MLS_implicit_function {
   static constexpr double gap_empty = 1.;
   static constexpr double gap_reach = 2.;
   static constexpr int gap_rounds = 6;
+  // The seeds blended by the partition of unity at a point (its weights reach 0 at the last).
+  static constexpr std::size_t blend_neighbors = 8;
+  // Where a seed's fit is dropped, P_L's fit stands in when its energy is at most this factor
+  // squared times the noise variance: a fit of the noise (about 0 without noise), not of a crease,
+  // which it would round.
+  static constexpr double fallback_noise_factor = 3.;
   using V = internal::Vec<3>;
   using M = internal::Mat<3>;
 
@@ -337,7 +343,7 @@ public:
     const V x = d.seeds->to_local(p);
     if(!x.allFinite()) return std::numeric_limits<double>::max();
     thread_local std::vector<std::size_t> idx;
-    const std::size_t k = std::size_t(std::clamp(d.options.blend_neighbors, 2, 63)); // dist holds k + 1
+    constexpr std::size_t k = blend_neighbors;
     // the k + 1 nearest seeds, searched within far_end h + 2h only: beyond, x is in the far region
     d.seeds->k_nearest(x, k + 1, idx, (d.options.far_end + 2.) * d.h);
     if(idx.empty() || !((x - d.fits[idx[0]].point).norm() < d.options.far_end * d.h)) return far_region_value(x);
@@ -671,7 +677,7 @@ private:
       for(std::size_t i = 0; i < n; ++i) world[i] = samples.to_world(samples.local_point(i));
       const auto sub = [&](double f) { return !callback || callback(0.2 * f); };
       d.normals_report = internal::estimate_oriented_normals<ConcurrencyTag, Geom_traits>(
-        world, normals, static_cast<unsigned int>((std::max)(3, d.options.normal_neighbors)), sub);
+        world, normals, internal::normal_neighbors, sub);
       if(!d.normals_report.completed) {
         d.status = Status::CANCELLED;
         return;
@@ -908,7 +914,7 @@ private:
       if(!project_all(probe.levin(), queries, results, 0., 0.05)) return false;
       const double noise = internal::noise_variance(d.projection);
       d.threshold = internal::screening_threshold(d.h, noise, internal::seed_noise_margin);
-      const double lambda = d.options.fallback_noise_factor;
+      constexpr double lambda = fallback_noise_factor;
       d.fallback_threshold = (std::max)(d.threshold, lambda * lambda * noise);
       d.seed_projection.emplace(d.projection, d.threshold);
       std::vector<std::size_t> others;

@@ -30,7 +30,7 @@ namespace MLS {
 ///    least-squares quadratic, at a scale where coarse samplings of creased shapes still have
 ///    points away from every crease),
 ///    \f$\kappa^2 = 4\f$ (below it, on the benchmark's noisy scans, the fan lands nearer to the
-///    surface than the quadratic on only half of the queries, and further off on the worst ones)
+///    surface than the quadratic on about half of the queries, and further off on the worst ones)
 ///    and \f$\rho = 0.01\f$ (on noiseless data, a residual of a hundredth of \f$h\f$ is what the
 ///    quadratic leaves on curved smooth parts).
 /// 2. <b>Model selection.</b> Where the fan is tried, it is kept only when it explains the data

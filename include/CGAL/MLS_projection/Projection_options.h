@@ -23,15 +23,8 @@ struct Projection_options {
   int k = 0;
   /// The kind of weight function.
   Weight_kind weight = Weight_kind::POLYNOMIAL;
-  /// The Gaussian weight is truncated at `gaussian_cutoff * h`.
-  double gaussian_cutoff = 4.;
-  /// The support radius of Wendland's weight, in units of \f$h\f$.
-  double wendland_support = 2.5;
   /// The largest number of energy evaluations of one optimiser run.
   int max_evaluations = 400;
-  /// The optimiser stops when the relative decrease of the energy or the relative step
-  /// falls below this value.
-  double tolerance = 1e-12;
   /// Whether `project_points()` continues each projection from the fit of a nearby query, with
   /// the operators that can (`Closest_point_projection`, `Mixed_projection`).
   bool warm_starts = true;

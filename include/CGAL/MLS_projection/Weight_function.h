@@ -21,12 +21,12 @@ enum class Weight_kind {
   /// smooth, without an exponential or a square root, and compactly supported, which makes
   /// members of the function space exactly reproducible (user manual, "Weights and Their Support").
   POLYNOMIAL,
-  /// \f$\omega(d) = e^{-d^2/h^2}\f$, truncated at `gaussian_cutoff * h` (4h by default,
-  /// where the weight is below \f$10^{-6}\f$ of its maximum).
+  /// \f$\omega(d) = e^{-d^2/h^2}\f$, truncated at \f$4h\f$ (where the weight is below
+  /// \f$10^{-6}\f$ of its maximum).
   GAUSSIAN,
   /// Wendland's \f$C^2\f$ function \f$\omega(d) = (1-d/R)^4 (4d/R+1)\f$ for \f$d < R\f$, 0 beyond,
-  /// with support radius \f$R\f$ = `wendland_support * h` (2.5h by default). Compact support
-  /// makes members of the function space exactly reproducible.
+  /// with support radius \f$R = 2.5h\f$. Compact support makes members of the function space
+  /// exactly reproducible.
   WENDLAND
 };
 
@@ -35,15 +35,15 @@ enum class Weight_kind {
 /// Cheap to copy; all members are `const`.
 class Weight_function {
 public:
-  /// The support radius of a `POLYNOMIAL` weight, in units of \f$h\f$.
-  static constexpr double polynomial_support = 2.449489742783178; // sqrt(6)
+  /// The support radius of a weight of kind `kind`, in units of \f$h\f$.
+  static constexpr double support(Weight_kind kind) {
+    return kind == Weight_kind::POLYNOMIAL ? 2.449489742783178 /* sqrt(6) */ : kind == Weight_kind::GAUSSIAN ? 4. : 2.5;
+  }
 
-  /// \pre `h > 0`, and `support_factor > 0` unless `kind` is `POLYNOMIAL` (whose support is
-  /// `polynomial_support` times `h`: `support_factor` is ignored)
-  Weight_function(Weight_kind kind, double h, double support_factor)
-    : kind_(kind), h_(h), inv_h2_(1. / (h * h)),
-      radius_((kind == Weight_kind::POLYNOMIAL ? polynomial_support : support_factor) * h), inv_r_(1. / radius_) {
-    CGAL_precondition(h > 0 && (kind == Weight_kind::POLYNOMIAL || support_factor > 0));
+  /// \pre `h > 0`
+  Weight_function(Weight_kind kind, double h)
+    : kind_(kind), h_(h), inv_h2_(1. / (h * h)), radius_(support(kind) * h), inv_r_(1. / radius_) {
+    CGAL_precondition(h > 0);
   }
 
   /// The kind of weight function.

@@ -44,8 +44,7 @@ public:
     : samples_(std::move(samples)), options_(options),
       k_(options.k > 0 ? std::size_t(options.k) : std::size_t(D == 2 ? 6 : 16)),
       h_(options.bandwidth > 0 ? options.bandwidth : samples_->mean_kth_neighbor_distance(k_)),
-      weight_(options.weight, h_ > 0 && std::isfinite(h_) ? h_ : 1., support_factor(options)),
-      unit_weight_(options.weight, 1., support_factor(options)) {}
+      weight_(options.weight, h_ > 0 && std::isfinite(h_) ? h_ : 1.), unit_weight_(options.weight, 1.) {}
 
   /// The bandwidth \f$h\f$ in use (0 when it could not be derived: all points equal, or fewer than two).
   double bandwidth() const { return has_bandwidth() ? h_ : 0.; }
@@ -73,16 +72,6 @@ protected:
   /// Radius gathered around a frame origin: the weight's support plus a margin of h/2,
   /// within which the origin may move before the neighbourhood is gathered again.
   double gather_radius() const { return weight_.support_radius() + 0.5 * h_; }
-
-  /// The support radius of the weight of `options`, in units of h.
-  static double support_factor(const Projection_options& options) {
-    switch(options.weight) {
-    case Weight_kind::GAUSSIAN: return options.gaussian_cutoff;
-    case Weight_kind::WENDLAND: return options.wendland_support;
-    case Weight_kind::POLYNOMIAL: break;
-    }
-    return Weight_function::polynomial_support;
-  }
 
   /// Sets the side of `nbh` for a query at `r` (`internal::side_at()`) with
   /// `Projection_options::one_sided` and input normals, else none.

@@ -79,7 +79,7 @@ inline double screening_threshold(double h, double noise_variance, double kappa2
 }
 
 /// \f$\kappa^2\f$ of `Mixed_projection`: on noisy scans of CAD parts the fan lands nearer to the
-/// surface than the quadratic for only half of the queries whose quadratic leaves less than 4
+/// surface than the quadratic for about half of the queries whose quadratic leaves less than 4
 /// times the noise variance (manual, section "The Mixed Space").
 constexpr double projection_noise_margin = 4.;
 /// \f$\kappa^2\f$ of the seeds of `MLS_implicit_function`: lower, as a seed's fan also carries the

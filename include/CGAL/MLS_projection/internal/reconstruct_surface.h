@@ -146,7 +146,7 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     for(std::size_t i = 0; i < items.size(); ++i) pts[i] = items[i].first;
     if(!report(NORMALS_STAGE, 0.)) return fail("cancelled");
     const auto r = estimate_oriented_normals<ConcurrencyTag, K>(
-      pts, normals, static_cast<unsigned int>((std::max)(3, s.implicit_function.normal_neighbors)),
+      pts, normals, normal_neighbors,
       slice(NORMALS_STAGE), !s.open_surface);
     if(!r.completed || normals.size() != items.size()) return fail("cancelled");
     for(std::size_t i = 0; i < items.size(); ++i) items[i].second = normals[i];
