@@ -10,7 +10,6 @@
 #include <CGAL/MLS_projection/internal/Operator_base.h>
 #include <CGAL/MLS_projection/internal/weighted_pca.h>
 
-#include <cmath>
 #include <memory>
 #include <vector>
 

@@ -914,8 +914,7 @@ private:
       if(!project_all(probe.levin(), queries, results, 0., 0.05)) return false;
       const double noise = internal::noise_variance(d.projection);
       d.threshold = internal::screening_threshold(d.h, noise, internal::seed_noise_margin);
-      constexpr double lambda = fallback_noise_factor;
-      d.fallback_threshold = (std::max)(d.threshold, lambda * lambda * noise);
+      d.fallback_threshold = (std::max)(d.threshold, fallback_noise_factor * fallback_noise_factor * noise);
       d.seed_projection.emplace(d.projection, d.threshold);
       std::vector<std::size_t> others;
       std::vector<Point_3> other_queries;

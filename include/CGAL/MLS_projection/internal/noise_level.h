@@ -70,22 +70,19 @@ double estimate_noise_variance(const Samples& samples) {
 
 /// The energy (weighted mean squared residual) of \f$\mathcal{P}_L\f$'s quadratic above which it does
 /// not explain the data, so that a sharp space may do better:
-/// \f$\tau = \max\big((\rho h)^2, \kappa^2 \hat\sigma^2\big)\f$, \f$\rho = 0.01\f$ (on noiseless
-/// data, a hundredth of \f$h\f$ is what the quadratic leaves on curved smooth parts) and
-/// \f$\kappa^2\f$ = `kappa2`, one of the two margins below.
+/// \f$\tau = \max\big((\rho h)^2, \kappa^2 \hat\sigma^2\big)\f$, \f$\rho = 0.01\f$ and
+/// \f$\kappa^2\f$ = `kappa2`, one of the two margins below (see `Mixed_projection`).
 inline double screening_threshold(double h, double noise_variance, double kappa2) {
   constexpr double rho = 0.01;
   return (std::max)((rho * h) * (rho * h), kappa2 * noise_variance);
 }
 
-/// \f$\kappa^2\f$ of `Mixed_projection`: on noisy scans of CAD parts the fan lands nearer to the
-/// surface than the quadratic for about half of the queries whose quadratic leaves less than 4
-/// times the noise variance (manual, section "The Mixed Space").
-constexpr double projection_noise_margin = 4.;
+/// \f$\kappa^2\f$ of `Mixed_projection` (manual, section "The Mixed Space").
+inline constexpr double projection_noise_margin = 4.;
 /// \f$\kappa^2\f$ of the seeds of `MLS_implicit_function`: lower, as a seed's fan also carries the
 /// crease to the feature detection, and the function blends and checks the fits (manual, section
 /// "Screening the Seeds by Levin's Operator").
-constexpr double seed_noise_margin = 2.5;
+inline constexpr double seed_noise_margin = 2.5;
 
 } // namespace internal
 } // namespace MLS

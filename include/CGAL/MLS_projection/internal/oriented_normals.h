@@ -34,6 +34,10 @@ namespace CGAL {
 namespace MLS {
 namespace internal {
 
+/// The neighbours of the PCA normals and of the orientation's graph when the samples carry no
+/// normals (manual, section "The Implicit Function: Local Fits").
+inline constexpr unsigned int normal_neighbors = 18;
+
 /// Estimates unit normals of `points` and orients them consistently; returns one normal per point
 /// in `normals` (same order).
 ///
@@ -72,10 +76,6 @@ namespace internal {
 ///
 /// `progress` (may be empty) receives fractions in [0, 1]; returning `false` cancels
 /// (`completed` is then `false` and `normals` is left empty).
-/// The neighbours of the PCA normals and of the orientation's graph when the samples carry no
-/// normals (manual, section "The Implicit Function: Local Fits").
-constexpr unsigned int normal_neighbors = 18;
-
 template <class ConcurrencyTag, class GeomTraits>
 Normal_orientation_report estimate_oriented_normals(const std::vector<typename GeomTraits::Point_3>& points,
                                                   std::vector<typename GeomTraits::Vector_3>& normals, unsigned int k,
