@@ -404,7 +404,9 @@ int run(int argc, char** argv) {
                                            (report.boundary_cycles == 1 ? ")" : "s)")
                                        : "not closed";
   const std::string outliers =
-    report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)";
+    (report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)") +
+    (report.normals_as_one_tree ? " (normals oriented again as one tree: the first orientation left the surface open)"
+                                : "");
   const std::string gaps = report.gap_seeds == 0 ? std::string() : ", " + std::to_string(report.gap_seeds) + " in gaps";
   std::fprintf(stderr,
                "%s: %zu points%s, %s/%s, %s, %.2f s (normals %.1f s, seeds %.1f s: %zu of %zu by the operator%s, features "

@@ -25,6 +25,10 @@ struct Meshing_report {
   /// Points whose estimated normal was oriented by the fall-back (away from the centroid: points
   /// without a neighbour in the orientation's graph; 0 when the input has normals).
   std::size_t normals_by_fallback = 0;
+  /// The estimated normals were oriented a second time, as one spanning tree: oriented with the
+  /// votes of the free space splitting the tree (the default), they left the surface open (see
+  /// the manual, "Thin parts").
+  bool normals_as_one_tree = false;
   /// Seeds whose local fits are blended, seeds projected but not blended (see
   /// `MLS_implicit_function::number_of_unblended_seeds()`), failed seeds, and the blended seeds
   /// whose fit is P_L's in place of the operator's (`number_of_levin_fallbacks()`), and the

@@ -139,30 +139,36 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     items, 6, parameters::point_map(First_of_pair_property_map<Item>()).geom_traits(K())));
   out.average_spacing = spacing;
   if(!(spacing > 0) || !std::isfinite(spacing)) return fail("no spacing (all points equal)");
-  const auto t_normals = Clock::now();
-  if(!has_normals) {
+  // Estimates the oriented normals when none is given: the orientation's spanning forest split by
+  // the votes of the free space (`split_by_votes`), or one tree turned by their sum.
+  const auto orient_normals = [&](bool split_by_votes) {
+    const auto t_normals = Clock::now();
+    if(has_normals) return true;
     std::vector<Point_3> pts(items.size());
     std::vector<Vector_3> normals;
     for(std::size_t i = 0; i < items.size(); ++i) pts[i] = items[i].first;
-    if(!report(NORMALS_STAGE, 0.)) return fail("cancelled");
-    const auto r = estimate_oriented_normals<ConcurrencyTag, K>(
-      pts, normals, normal_neighbors,
-      slice(NORMALS_STAGE), !s.open_surface);
-    if(!r.completed || normals.size() != items.size()) return fail("cancelled");
+    if(!report(NORMALS_STAGE, 0.)) return false;
+    const auto r = estimate_oriented_normals<ConcurrencyTag, K>(pts, normals, normal_neighbors, slice(NORMALS_STAGE),
+                                                                split_by_votes);
+    if(!r.completed || normals.size() != items.size()) return false;
     for(std::size_t i = 0; i < items.size(); ++i) items[i].second = normals[i];
     out.normals_by_fallback = r.oriented_by_fallback;
-  }
-  out.seconds_normals = since(t_normals);
+    out.seconds_normals += since(t_normals);
+    return true;
+  };
   // the sample set reads the items by index (the attributes are stored apart)
   std::vector<std::size_t> indices(items.size());
   for(std::size_t i = 0; i < items.size(); ++i) indices[i] = i;
   const auto attribute_of = [&](std::size_t i) {
     return Attribute_span{attributes.data() + i * channels, attributes.data() + (i + 1) * channels};
   };
-  const auto samples = std::make_shared<const Samples>(
-    indices, MLS::parameters::attribute_map(boost::make_function_property_map<std::size_t>(attribute_of))
-               .point_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].first; }))
-               .normal_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].second; })));
+  const auto make_samples = [&] {
+    return std::make_shared<const Samples>(
+      indices, MLS::parameters::attribute_map(boost::make_function_property_map<std::size_t>(attribute_of))
+                 .point_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].first; }))
+                 .normal_map(boost::make_function_property_map<std::size_t>([&](std::size_t i) { return items[i].second; })));
+  };
+  std::shared_ptr<const Samples> samples;
   Projection_options projection_options;
   projection_options.bandwidth = s.bandwidth;
   projection_options.one_sided = true;
@@ -174,6 +180,7 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
   const double depth = 2. * facet_size;
   const Open_surface_slab slab{depth, (std::max)(margin + facet_size, depth + spacing)};
 
+  bool not_closed = false; // set by run(): the surface is not closed
   const auto run = [&](const auto& projection) -> bool {
     using Projection = std::decay_t<decltype(projection)>;
     using Function = MLS_implicit_function<Projection>;
@@ -199,6 +206,11 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     out.gap_seeds = function.number_of_gap_seeds();
     if(function.status() == Function::Status::CANCELLED) return fail("cancelled");
     if(!function.is_valid()) return fail("no implicit function (too few seeds could be projected: degenerate data)");
+    if(!s.open_surface)
+      if(const char* why = closed_surface_failure(function)) {
+        not_closed = true;
+        return fail(why);
+      }
     const double h = function.bandwidth();
     // 3. sharp features
     const auto t_features = Clock::now();
@@ -241,8 +253,6 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     in.inner_point = point_as<Mesher_point>(s.open_surface && !seeds.empty()
                                               ? seeds[0].point - seeds[0].normal * (0.5 * spacing)
                                               : function.get_inner_point());
-    if(!s.open_surface)
-      if(const char* why = closed_surface_failure(function)) return fail(why);
     if(!(in.function(in.inner_point) < 0)) return fail("the implicit function has no inside");
     // from inside to outside across the surface (for the slab, from its middle), and across the
     // slab's back: the points on a flat scan alone are coplanar, and Mesh_3 finds no cell to refine
@@ -319,6 +329,18 @@ bool reconstruct_items(std::vector<std::pair<typename GeomTraits::Point_3, typen
     return true;
   };
 
+  if(!orient_normals(!s.open_surface)) return fail("cancelled");
+  samples = make_samples();
+  if(run(make_operator<K>(tag, samples, projection_options))) return true;
+  // Estimated normals that leave the surface open: the votes may have split the forest into trees
+  // turned opposite ways (the walls of bores a few spacings wide, which the votes' wall seals on a
+  // sparse scan). Oriented again as one tree, turned outward by the sum of the votes.
+  if(!not_closed || has_normals || s.open_surface) return false;
+  not_closed = false;
+  out.failure = "";
+  out.normals_as_one_tree = true;
+  if(!orient_normals(false)) return fail("cancelled");
+  samples = make_samples();
   return run(make_operator<K>(tag, samples, projection_options));
 }
 
