@@ -16,7 +16,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
-#include <CGAL/MLS_projection/internal/levin_energy.h>
+#include <CGAL/MLS_projection/internal/projection/levin_energy.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/project_points.h>

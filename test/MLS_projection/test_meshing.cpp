@@ -11,7 +11,7 @@
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
 #include <CGAL/MLS_projection/MLS_mesh_domain_3.h>
 #include <CGAL/MLS_projection/interpolate_attributes.h>
-#include <CGAL/MLS_projection/internal/unsupported_components.h>
+#include <CGAL/MLS_projection/internal/meshing/unsupported_components.h>
 #include <CGAL/MLS_projection/mls_surface_reconstruction.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>

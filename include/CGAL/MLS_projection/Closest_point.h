@@ -4,7 +4,7 @@
 #ifndef CGAL_MLS_PROJECTION_CLOSEST_POINT_H
 #define CGAL_MLS_PROJECTION_CLOSEST_POINT_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 namespace CGAL {
 namespace MLS {

@@ -6,10 +6,10 @@
 
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Plane_function_space.h>
-#include <CGAL/MLS_projection/internal/Frame.h>
-#include <CGAL/MLS_projection/internal/Levenberg_marquardt.h>
-#include <CGAL/MLS_projection/internal/Operator_base.h>
-#include <CGAL/MLS_projection/internal/plane_split.h>
+#include <CGAL/MLS_projection/internal/projection/Frame.h>
+#include <CGAL/MLS_projection/internal/projection/Levenberg_marquardt.h>
+#include <CGAL/MLS_projection/internal/projection/Operator_base.h>
+#include <CGAL/MLS_projection/internal/projection/plane_split.h>
 
 #include <algorithm>
 #include <array>

@@ -5,10 +5,10 @@
 #define CGAL_MLS_PROJECTION_LEVIN_PROJECTION_H
 
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/internal/Newton_minimizer.h>
-#include <CGAL/MLS_projection/internal/levin_energy.h>
-#include <CGAL/MLS_projection/internal/Operator_base.h>
-#include <CGAL/MLS_projection/internal/weighted_pca.h>
+#include <CGAL/MLS_projection/internal/projection/Newton_minimizer.h>
+#include <CGAL/MLS_projection/internal/projection/levin_energy.h>
+#include <CGAL/MLS_projection/internal/projection/Operator_base.h>
+#include <CGAL/MLS_projection/internal/projection/weighted_pca.h>
 
 #include <memory>
 #include <vector>

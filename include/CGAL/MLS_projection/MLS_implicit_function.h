@@ -14,10 +14,10 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Sample_set.h>
-#include <CGAL/MLS_projection/internal/Lattice_value_cache.h>
-#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
-#include <CGAL/MLS_projection/internal/noise_level.h>
-#include <CGAL/MLS_projection/internal/oriented_normals.h>
+#include <CGAL/MLS_projection/internal/meshing/Lattice_value_cache.h>
+#include <CGAL/MLS_projection/internal/projection/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/projection/noise_level.h>
+#include <CGAL/MLS_projection/internal/meshing/oriented_normals.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #include <CGAL/tags.h>

@@ -6,9 +6,9 @@
 
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
 #include <CGAL/MLS_projection/parameters.h>
-#include <CGAL/MLS_projection/internal/evaluation_monitor.h>
-#include <CGAL/MLS_projection/internal/protected_polylines.h>
-#include <CGAL/MLS_projection/internal/surface_function.h>
+#include <CGAL/MLS_projection/internal/meshing/evaluation_monitor.h>
+#include <CGAL/MLS_projection/internal/meshing/protected_polylines.h>
+#include <CGAL/MLS_projection/internal/meshing/surface_function.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>

@@ -8,7 +8,7 @@
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
-#include <CGAL/MLS_projection/internal/noise_level.h>
+#include <CGAL/MLS_projection/internal/projection/noise_level.h>
 
 #include <algorithm>
 #include <memory>

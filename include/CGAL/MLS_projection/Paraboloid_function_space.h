@@ -6,7 +6,7 @@
 
 #include <CGAL/MLS_projection/Closest_point.h>
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <CGAL/number_type_config.h>
 

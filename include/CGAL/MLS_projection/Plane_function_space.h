@@ -5,7 +5,7 @@
 #define CGAL_MLS_PROJECTION_PLANE_FUNCTION_SPACE_H
 
 #include <CGAL/MLS_projection/Closest_point.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <cstddef>
 

@@ -4,7 +4,7 @@
 #ifndef CGAL_MLS_PROJECTION_POLYNOMIAL_FUNCTION_SPACE_H
 #define CGAL_MLS_PROJECTION_POLYNOMIAL_FUNCTION_SPACE_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>

@@ -5,7 +5,7 @@
 #define CGAL_MLS_PROJECTION_PROJECTION_RESULT_H
 
 #include <CGAL/MLS_projection/Projection_status.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <array>
 #include <cstddef>

@@ -4,8 +4,8 @@
 #ifndef CGAL_MLS_PROJECTION_SAMPLE_SET_H
 #define CGAL_MLS_PROJECTION_SAMPLE_SET_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
-#include <CGAL/MLS_projection/internal/Point_tree.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Point_tree.h>
 #include <CGAL/MLS_projection/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>

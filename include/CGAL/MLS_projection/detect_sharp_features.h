@@ -7,7 +7,7 @@
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/parameters.h>
-#include <CGAL/MLS_projection/internal/polyline_chaining.h>
+#include <CGAL/MLS_projection/internal/features/polyline_chaining.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #include <CGAL/Named_function_parameters.h>

@@ -7,9 +7,9 @@
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
 #include <CGAL/MLS_projection/Mixed_projection.h>
-#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
-#include <CGAL/MLS_projection/internal/Neighborhood.h>
+#include <CGAL/MLS_projection/internal/projection/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Neighborhood.h>
 
 #include <cmath>
 #include <cstddef>

@@ -14,7 +14,7 @@
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/parameters.h>
 #include <CGAL/MLS_projection/project_points.h>
-#include <CGAL/MLS_projection/internal/operator_from_tag.h>
+#include <CGAL/MLS_projection/internal/projection/operator_from_tag.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -11,7 +11,7 @@
 #include <CGAL/MLS_projection/Paraboloid_function_space.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
 #include <CGAL/MLS_projection/parameters.h>
-#include <CGAL/MLS_projection/internal/reconstruct_surface.h>
+#include <CGAL/MLS_projection/internal/meshing/reconstruct_surface.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>

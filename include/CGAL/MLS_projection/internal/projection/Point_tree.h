@@ -7,10 +7,10 @@
 // generic: a ball of about a hundred points costs some 2 microseconds, against some 18 through
 // CGAL's Kd_tree behind a property-map adapter. Indices are 32-bit: at most 2^32 - 1 points.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_POINT_TREE_H
-#define CGAL_MLS_PROJECTION_INTERNAL_POINT_TREE_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_POINT_TREE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_POINT_TREE_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <CGAL/assertions.h>
 
@@ -181,4 +181,4 @@ private:
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_POINT_TREE_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_POINT_TREE_H

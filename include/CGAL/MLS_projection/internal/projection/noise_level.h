@@ -5,10 +5,10 @@
 // samplings of creased shapes keep points whose neighbourhoods lie on one smooth face, and the
 // energy above which a quadratic fit does not explain the data.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_NOISE_LEVEL_H
-#define CGAL_MLS_PROJECTION_INTERNAL_NOISE_LEVEL_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NOISE_LEVEL_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NOISE_LEVEL_H
 
-#include <CGAL/MLS_projection/internal/weighted_pca.h>
+#include <CGAL/MLS_projection/internal/projection/weighted_pca.h>
 
 #include <Eigen/QR>
 
@@ -88,4 +88,4 @@ inline constexpr double seed_noise_margin = 2.5;
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_NOISE_LEVEL_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NOISE_LEVEL_H

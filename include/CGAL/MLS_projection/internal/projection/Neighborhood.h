@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_NEIGHBORHOOD_H
-#define CGAL_MLS_PROJECTION_INTERNAL_NEIGHBORHOOD_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEIGHBORHOOD_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEIGHBORHOOD_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <cstddef>
 #include <vector>
@@ -91,4 +91,4 @@ struct Neighborhood {
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_NEIGHBORHOOD_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEIGHBORHOOD_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_FROM_TAG_H
-#define CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_FROM_TAG_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_FROM_TAG_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_FROM_TAG_H
 
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
@@ -40,4 +40,4 @@ Mixed_projection<K, 3> make_operator(Mixed_operator_tag, std::shared_ptr<const S
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_FROM_TAG_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_FROM_TAG_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_UNSUPPORTED_COMPONENTS_H
-#define CGAL_MLS_PROJECTION_INTERNAL_UNSUPPORTED_COMPONENTS_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_UNSUPPORTED_COMPONENTS_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_UNSUPPORTED_COMPONENTS_H
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Bbox_3.h>
@@ -86,4 +86,4 @@ std::size_t remove_unsupported_components(PolygonMesh& mesh, const DistanceToDat
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_UNSUPPORTED_COMPONENTS_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_UNSUPPORTED_COMPONENTS_H

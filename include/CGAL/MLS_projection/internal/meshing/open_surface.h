@@ -4,12 +4,12 @@
 // The meshing of an open scan: the closed boundary of a slab under the surface, within reach of
 // the data, is meshed; its facets on the surface are kept, clipped where the data end.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_OPEN_SURFACE_H
-#define CGAL_MLS_PROJECTION_INTERNAL_OPEN_SURFACE_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_OPEN_SURFACE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_OPEN_SURFACE_H
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/MLS_projection/internal/mesher_calls.h>
+#include <CGAL/MLS_projection/internal/meshing/mesher_calls.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
@@ -129,4 +129,4 @@ std::size_t clip_mesh(PolygonMesh& mesh, const Keep& keep, const Level& level, c
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_OPEN_SURFACE_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_OPEN_SURFACE_H

@@ -5,8 +5,8 @@
 // whose gradient and Hessian are known in closed form (Levin's phase 1): quadratic convergence
 // near a minimum, fixed-size linear algebra, one evaluation per iteration.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_NEWTON_MINIMIZER_H
-#define CGAL_MLS_PROJECTION_INTERNAL_NEWTON_MINIMIZER_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEWTON_MINIMIZER_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEWTON_MINIMIZER_H
 
 #include <Eigen/Dense>
 
@@ -120,4 +120,4 @@ Newton_report minimize_newton(State& x, const Evaluate& evaluate, const Retract&
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_NEWTON_MINIMIZER_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_NEWTON_MINIMIZER_H

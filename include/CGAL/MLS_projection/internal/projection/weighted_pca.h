@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_WEIGHTED_PCA_H
-#define CGAL_MLS_PROJECTION_INTERNAL_WEIGHTED_PCA_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_WEIGHTED_PCA_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_WEIGHTED_PCA_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -60,4 +60,4 @@ Pca<D> weighted_pca(const std::vector<Vec<D>>& p, const std::vector<double>& w) 
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_WEIGHTED_PCA_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_WEIGHTED_PCA_H

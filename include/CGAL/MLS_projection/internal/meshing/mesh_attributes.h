@@ -1,11 +1,11 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESH_ATTRIBUTES_H
-#define CGAL_MLS_PROJECTION_INTERNAL_MESH_ATTRIBUTES_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESH_ATTRIBUTES_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESH_ATTRIBUTES_H
 
 #include <CGAL/MLS_projection/interpolate_attributes.h>
-#include <CGAL/MLS_projection/internal/Point_tree.h>
+#include <CGAL/MLS_projection/internal/projection/Point_tree.h>
 #include <CGAL/MLS_projection/project_points.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -62,4 +62,4 @@ std::vector<std::vector<double>> interpolate_vertex_attributes(const Projection&
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_MESH_ATTRIBUTES_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESH_ATTRIBUTES_H

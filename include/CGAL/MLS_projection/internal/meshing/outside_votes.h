@@ -4,10 +4,10 @@
 // Votes for the orientation of unoriented normals from the space around the points: which voxels
 // the outside reaches, and how far along each normal the points' neighbourhood extends.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_OUTSIDE_VOTES_H
-#define CGAL_MLS_PROJECTION_INTERNAL_OUTSIDE_VOTES_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTSIDE_VOTES_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTSIDE_VOTES_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <array>
 #include <cmath>
@@ -152,4 +152,4 @@ inline std::vector<std::int8_t> outside_votes(const std::vector<Vec<3>>& p, cons
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_OUTSIDE_VOTES_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTSIDE_VOTES_H

@@ -5,16 +5,16 @@
 // the initial frame from a weighted PCA, the orientation of normals and the assembly
 // of results (including the failure results that never hold a NaN).
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
-#define CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_BASE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_BASE_H
 
 #include <CGAL/MLS_projection/Projection_options.h>
 #include <CGAL/MLS_projection/Projection_result.h>
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/Weight_function.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
-#include <CGAL/MLS_projection/internal/Neighborhood.h>
-#include <CGAL/MLS_projection/internal/weighted_pca.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Neighborhood.h>
+#include <CGAL/MLS_projection/internal/projection/weighted_pca.h>
 
 #include <algorithm>
 #include <cmath>
@@ -173,4 +173,4 @@ protected:
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_OPERATOR_BASE_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_OPERATOR_BASE_H

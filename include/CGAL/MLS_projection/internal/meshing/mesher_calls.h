@@ -7,11 +7,11 @@
 // (std::function<double(const Point_3&)>), in Epick (see reconstruct_items): the meshers are
 // instantiated once per output mesh type, whatever the projection operator and the kernel.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
-#define CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESHER_CALLS_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESHER_CALLS_H
 
 #include <CGAL/MLS_projection/MLS_mesh_domain_3.h>
-#include <CGAL/MLS_projection/internal/evaluation_monitor.h>
+#include <CGAL/MLS_projection/internal/meshing/evaluation_monitor.h>
 
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -428,4 +428,4 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHER_CALLS_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_MESHER_CALLS_H

@@ -4,11 +4,11 @@
 // Levin's phase-1 energy (equation 1 of the paper) with its gradient and Hessian in closed form,
 // for Newton's method (Levin_projection::find_frame()).
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_LEVIN_ENERGY_H
-#define CGAL_MLS_PROJECTION_INTERNAL_LEVIN_ENERGY_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_ENERGY_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_ENERGY_H
 
 #include <CGAL/MLS_projection/Weight_function.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <Eigen/Dense>
 
@@ -88,4 +88,4 @@ bool levin_energy(const std::vector<Vec<D>>& y, const Vec<D>& n, double s, const
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_LEVIN_ENERGY_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_ENERGY_H

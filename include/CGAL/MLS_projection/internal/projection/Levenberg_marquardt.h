@@ -8,8 +8,8 @@
 // paper is a normalised weighted sum of squares, sum_i (w_i / W) r_i^2, minimised as the sum of
 // squares of the residuals sqrt(w_i / W) r_i, whose weights depend on the parameters.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_LEVENBERG_MARQUARDT_H
-#define CGAL_MLS_PROJECTION_INTERNAL_LEVENBERG_MARQUARDT_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVENBERG_MARQUARDT_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVENBERG_MARQUARDT_H
 
 #include <Eigen/Dense>
 
@@ -182,4 +182,4 @@ Minimizer_report<N> levenberg_marquardt(const Evaluate& evaluate, const Eigen::M
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_LEVENBERG_MARQUARDT_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVENBERG_MARQUARDT_H

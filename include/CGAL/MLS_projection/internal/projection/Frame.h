@@ -7,10 +7,10 @@
 // transports the tangent axes with the normal, so the parameters of the local function keep
 // their meaning while the frame turns.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_FRAME_H
-#define CGAL_MLS_PROJECTION_INTERNAL_FRAME_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_FRAME_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_FRAME_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <Eigen/Geometry>
 
@@ -64,4 +64,4 @@ struct Frame {
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_FRAME_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_FRAME_H

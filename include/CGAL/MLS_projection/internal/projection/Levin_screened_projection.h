@@ -9,8 +9,8 @@
 // mls_surface_reconstruction (the feature detection), where most of the surface is smooth and
 // the closest-point operators cost 10 to 500 times P_L per query.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_LEVIN_SCREENED_PROJECTION_H
-#define CGAL_MLS_PROJECTION_INTERNAL_LEVIN_SCREENED_PROJECTION_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_SCREENED_PROJECTION_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_SCREENED_PROJECTION_H
 
 #include <CGAL/MLS_projection/Closest_point_projection.h>
 #include <CGAL/MLS_projection/Levin_projection.h>
@@ -18,7 +18,7 @@
 #include <CGAL/MLS_projection/Polynomial_function_space.h>
 #include <CGAL/MLS_projection/Projection_options.h>
 #include <CGAL/MLS_projection/Wedge_fan_function_space.h>
-#include <CGAL/MLS_projection/internal/noise_level.h>
+#include <CGAL/MLS_projection/internal/projection/noise_level.h>
 
 #include <memory>
 #include <type_traits>
@@ -142,4 +142,4 @@ private:
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_LEVIN_SCREENED_PROJECTION_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_LEVIN_SCREENED_PROJECTION_H

@@ -4,8 +4,8 @@
 // The implicit function as the meshers evaluate it: counted, cancellable, its recent values
 // cached per thread.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_EVALUATION_MONITOR_H
-#define CGAL_MLS_PROJECTION_INTERNAL_EVALUATION_MONITOR_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_EVALUATION_MONITOR_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_EVALUATION_MONITOR_H
 
 #include <CGAL/number_utils.h>
 
@@ -112,4 +112,4 @@ struct Monitored_function {
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_EVALUATION_MONITOR_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_EVALUATION_MONITOR_H

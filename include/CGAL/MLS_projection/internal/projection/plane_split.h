@@ -7,11 +7,11 @@
 // from splits along the principal axes. Their intersection proposes a crease (two) or an apex
 // (three) where a wedge fan can start.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_PLANE_SPLIT_H
-#define CGAL_MLS_PROJECTION_INTERNAL_PLANE_SPLIT_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_PLANE_SPLIT_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_PLANE_SPLIT_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
-#include <CGAL/MLS_projection/internal/weighted_pca.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/weighted_pca.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -163,4 +163,4 @@ bool intersection_nearest(const std::array<Hyperplane<D>, K>& planes, const Vec<
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_PLANE_SPLIT_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_PLANE_SPLIT_H

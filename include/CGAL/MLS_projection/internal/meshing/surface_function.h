@@ -4,8 +4,8 @@
 // The implicit function as Mesh_3 meshes a closed surface: checked closed inside its bounding
 // sphere, positive beyond it, with short segments across the surface for the initial points.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_SURFACE_FUNCTION_H
-#define CGAL_MLS_PROJECTION_INTERNAL_SURFACE_FUNCTION_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_SURFACE_FUNCTION_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_SURFACE_FUNCTION_H
 
 #include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
@@ -103,4 +103,4 @@ std::vector<std::pair<Point_3, Point_3>> surface_probes(const std::vector<Result
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_SURFACE_FUNCTION_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_SURFACE_FUNCTION_H

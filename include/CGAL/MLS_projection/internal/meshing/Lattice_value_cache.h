@@ -5,10 +5,10 @@
 // depends only on its node, whichever thread computes it first, so that results do not depend
 // on the threads. Mutex-guarded shards rather than TBB's concurrent_hash_map: TBB is optional.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_LATTICE_VALUE_CACHE_H
-#define CGAL_MLS_PROJECTION_INTERNAL_LATTICE_VALUE_CACHE_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_LATTICE_VALUE_CACHE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_LATTICE_VALUE_CACHE_H
 
-#include <CGAL/MLS_projection/internal/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
 
 #include <array>
 #include <cstdint>
@@ -59,4 +59,4 @@ private:
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_LATTICE_VALUE_CACHE_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_LATTICE_VALUE_CACHE_H

@@ -6,13 +6,13 @@
 // pca_estimate_normals and oriented along a minimum spanning forest of the neighbour graph, with
 // the votes of the free space around the points.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
-#define CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_ORIENTED_NORMALS_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_ORIENTED_NORMALS_H
 
 #include <CGAL/MLS_projection/Normal_orientation_report.h>
-#include <CGAL/MLS_projection/internal/Dimension.h>
-#include <CGAL/MLS_projection/internal/Point_tree.h>
-#include <CGAL/MLS_projection/internal/outside_votes.h>
+#include <CGAL/MLS_projection/internal/projection/Dimension.h>
+#include <CGAL/MLS_projection/internal/projection/Point_tree.h>
+#include <CGAL/MLS_projection/internal/meshing/outside_votes.h>
 
 #include <CGAL/for_each.h>
 #include <CGAL/pca_estimate_normals.h>
@@ -302,4 +302,4 @@ Normal_orientation_report estimate_oriented_normals(const std::vector<typename G
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_ORIENTED_NORMALS_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_ORIENTED_NORMALS_H

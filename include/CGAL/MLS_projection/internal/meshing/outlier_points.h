@@ -3,10 +3,10 @@
 //
 // The outliers of a scan: the points that lie apart from the others or off their local surface.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_OUTLIER_POINTS_H
-#define CGAL_MLS_PROJECTION_INTERNAL_OUTLIER_POINTS_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTLIER_POINTS_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTLIER_POINTS_H
 
-#include <CGAL/MLS_projection/internal/Point_tree.h>
+#include <CGAL/MLS_projection/internal/projection/Point_tree.h>
 
 #include <CGAL/for_each.h>
 
@@ -96,4 +96,4 @@ std::vector<bool> outlier_points(const std::vector<Vec<3>>& points) {
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_OUTLIER_POINTS_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_OUTLIER_POINTS_H

@@ -4,11 +4,11 @@
 // The sharp-feature polylines that Mesh_3 can protect on the surface f = 0: detected on the
 // seeds' projections, those off the surface dropped, the others fitted to it.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROTECTED_POLYLINES_H
-#define CGAL_MLS_PROJECTION_INTERNAL_PROTECTED_POLYLINES_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_PROTECTED_POLYLINES_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_PROTECTED_POLYLINES_H
 
 #include <CGAL/MLS_projection/detect_sharp_features.h>
-#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/projection/Levin_screened_projection.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -133,4 +133,4 @@ void fit_polylines_to_surface(std::vector<std::vector<Point_3>>& polylines, cons
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_PROTECTED_POLYLINES_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_PROTECTED_POLYLINES_H

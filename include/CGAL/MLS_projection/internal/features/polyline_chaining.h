@@ -8,8 +8,8 @@
 // visits points in the order they are given, so the output depends on the input order only.
 // Lengths are in the caller's units (the caller multiplies its knobs by h).
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_POLYLINE_CHAINING_H
-#define CGAL_MLS_PROJECTION_INTERNAL_POLYLINE_CHAINING_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_FEATURES_POLYLINE_CHAINING_H
+#define CGAL_MLS_PROJECTION_INTERNAL_FEATURES_POLYLINE_CHAINING_H
 
 #include <CGAL/boost/graph/split_graph_into_polylines.h>
 
@@ -390,4 +390,4 @@ inline std::vector<Feature_vec> resample_polyline(const std::vector<Feature_vec>
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_POLYLINE_CHAINING_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_FEATURES_POLYLINE_CHAINING_H

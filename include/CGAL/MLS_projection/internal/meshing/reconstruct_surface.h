@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL MLS_projection authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_RECONSTRUCT_SURFACE_H
-#define CGAL_MLS_PROJECTION_INTERNAL_RECONSTRUCT_SURFACE_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_MESHING_RECONSTRUCT_SURFACE_H
+#define CGAL_MLS_PROJECTION_INTERNAL_MESHING_RECONSTRUCT_SURFACE_H
 
 #include <CGAL/MLS_projection/Implicit_function_options.h>
 #include <CGAL/MLS_projection/MLS_implicit_function.h>
@@ -11,16 +11,16 @@
 #include <CGAL/MLS_projection/Sample_set.h>
 #include <CGAL/MLS_projection/detect_sharp_features.h>
 #include <CGAL/MLS_projection/parameters.h>
-#include <CGAL/MLS_projection/internal/Levin_screened_projection.h>
-#include <CGAL/MLS_projection/internal/mesh_attributes.h>
-#include <CGAL/MLS_projection/internal/mesher_calls.h>
-#include <CGAL/MLS_projection/internal/operator_from_tag.h>
-#include <CGAL/MLS_projection/internal/open_surface.h>
-#include <CGAL/MLS_projection/internal/oriented_normals.h>
-#include <CGAL/MLS_projection/internal/outlier_points.h>
-#include <CGAL/MLS_projection/internal/protected_polylines.h>
-#include <CGAL/MLS_projection/internal/surface_function.h>
-#include <CGAL/MLS_projection/internal/unsupported_components.h>
+#include <CGAL/MLS_projection/internal/projection/Levin_screened_projection.h>
+#include <CGAL/MLS_projection/internal/meshing/mesh_attributes.h>
+#include <CGAL/MLS_projection/internal/meshing/mesher_calls.h>
+#include <CGAL/MLS_projection/internal/projection/operator_from_tag.h>
+#include <CGAL/MLS_projection/internal/meshing/open_surface.h>
+#include <CGAL/MLS_projection/internal/meshing/oriented_normals.h>
+#include <CGAL/MLS_projection/internal/meshing/outlier_points.h>
+#include <CGAL/MLS_projection/internal/meshing/protected_polylines.h>
+#include <CGAL/MLS_projection/internal/meshing/surface_function.h>
+#include <CGAL/MLS_projection/internal/meshing/unsupported_components.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -407,4 +407,4 @@ bool reconstruct_surface(const PointRange& points, PolygonMesh& mesh, const Reco
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_RECONSTRUCT_SURFACE_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_MESHING_RECONSTRUCT_SURFACE_H

@@ -4,8 +4,8 @@
 // Dimension-generic helpers: Eigen types in dimension D (2 or 3), the
 // kernel's point and vector types, and conversions between them.
 
-#ifndef CGAL_MLS_PROJECTION_INTERNAL_DIMENSION_H
-#define CGAL_MLS_PROJECTION_INTERNAL_DIMENSION_H
+#ifndef CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_DIMENSION_H
+#define CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_DIMENSION_H
 
 #include <CGAL/number_utils.h>
 #include <Eigen/Dense>
@@ -82,4 +82,4 @@ Vec<D> exp_map(const Vec<D>& n0, const std::array<Vec<D>, D - 1>& basis, const P
 } // namespace MLS
 } // namespace CGAL
 
-#endif // CGAL_MLS_PROJECTION_INTERNAL_DIMENSION_H
+#endif // CGAL_MLS_PROJECTION_INTERNAL_PROJECTION_DIMENSION_H
