@@ -403,7 +403,7 @@ int run(int argc, char** argv) {
                               : s.open ? "open (" + std::to_string(report.boundary_cycles) + " boundary cycle" +
                                            (report.boundary_cycles == 1 ? ")" : "s)")
                                        : "not closed";
-  const std::string outliers =
+  const std::string input_notes =
     (report.outliers == 0 ? std::string() : " (" + std::to_string(report.outliers) + " outliers removed)") +
     (report.normals_as_one_tree ? " (normals oriented again as one tree: the first orientation left the surface open)"
                                 : "");
@@ -413,7 +413,7 @@ int run(int argc, char** argv) {
                "%.1f s: %zu queries, meshing %.1f s), %zu vertices, %zu facets, %zu feature polylines, %zu corners%s%s, %s, %s, "
                "output %s%s\n",
                tool_name, input.size(),
-               outliers.c_str(), name_of(s.op, operator_choices).c_str(),
+               input_notes.c_str(), name_of(s.op, operator_choices).c_str(),
                name_of(space, space_choices).c_str(), name_of(s.mesher, mesher_choices).c_str(), seconds,
                report.seconds_normals, report.seconds_seeds, report.operator_seeds, report.seeds + report.unblended_seeds + report.failed_seeds, gaps.c_str(),
                report.seconds_features, report.feature_queries, report.seconds_meshing, std::size_t(mesh.number_of_vertices()), std::size_t(mesh.number_of_faces()), report.feature_polylines, report.corners,

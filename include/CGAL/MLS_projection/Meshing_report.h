@@ -27,7 +27,7 @@ struct Meshing_report {
   std::size_t normals_by_fallback = 0;
   /// The estimated normals were oriented a second time, as one spanning tree: oriented with the
   /// votes of the free space splitting the tree (the default), they left the surface open (see
-  /// the manual, "Thin parts").
+  /// the manual, "The Implicit Function: Local Fits").
   bool normals_as_one_tree = false;
   /// Seeds whose local fits are blended, seeds projected but not blended (see
   /// `MLS_implicit_function::number_of_unblended_seeds()`), failed seeds, and the blended seeds
