@@ -213,16 +213,23 @@ void clear_mesh(PolygonMesh& mesh) {
     CGAL::clear(mesh);
 }
 
+// The report of a mesher that ended with `mesh`: a success when it has facets and only finite
+// vertices (a mesh with a non-finite vertex is cleared).
 template <class PolygonMesh>
-bool has_finite_vertices(const PolygonMesh& mesh) {
+Mesher_report& finished(PolygonMesh& mesh, Mesher_report& report) {
   const auto vpm = get(CGAL::vertex_point, mesh);
   for(auto v : vertices(mesh)) {
     const auto& p = get(vpm, v);
     if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-       !std::isfinite(CGAL::to_double(p.z())))
-      return false;
+       !std::isfinite(CGAL::to_double(p.z()))) {
+      clear_mesh(mesh);
+      report.message = "non-finite vertex";
+      return report;
+    }
   }
-  return true;
+  report.success = num_faces(mesh) > 0;
+  if(!report.success) report.message = "empty mesh";
+  return report;
 }
 
 /// Inserts into `c3t3` the domain's initial points (the probes' intersections with the surface)
@@ -357,14 +364,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
   report.evaluations = monitor->count.load();
   if(monitor->stop.load()) return stopped(*monitor, report);
   facets_in_complex_3_to_triangle_mesh(c3t3, mesh);
-  if(!has_finite_vertices(mesh)) {
-    clear_mesh(mesh);
-    report.message = "non-finite vertex";
-    return report;
-  }
-  report.success = num_faces(mesh) > 0;
-  if(!report.success) report.message = "empty mesh";
-  return report;
+  return finished(mesh, report);
 }
 
 /// Meshes the surface \f$f = 0\f$ with Surface_mesher (`make_surface_mesh` on an
@@ -414,14 +414,7 @@ Mesher_report mesh_with_surface_mesher(const Mesher_input<GeomTraits>& in, Polyg
     report.evaluations = monitor->count.load();
     return stopped(*monitor, report);
   }
-  if(!has_finite_vertices(mesh)) {
-    clear_mesh(mesh);
-    report.message = "non-finite vertex";
-    return report;
-  }
-  report.success = num_faces(mesh) > 0;
-  if(!report.success) report.message = "empty mesh";
-  return report;
+  return finished(mesh, report);
 }
 
 } // namespace internal
