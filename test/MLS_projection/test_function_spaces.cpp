@@ -106,7 +106,7 @@ void check_parabola(double k, const V2& x, Worst& worst) {
   MLS_CHECK_MSG(e <= 1e-9, "k " + mls_test::fmt(k) + " x " + mls_test::fmt(x[0]) + "," + mls_test::fmt(x[1]) +
                                " mine " + mls_test::fmt(d) + " brute " + mls_test::fmt(db));
   MLS_CHECK_NEAR(cp.normal.norm(), 1., 1e-12);
-  MLS_CHECK(!cp.is_singular);
+  MLS_CHECK(!cp.is_on_feature);
   MLS_CHECK_NEAR(std::abs(cp.signed_distance), d, 1e-14 * scale);
   // normal orthogonal to the tangent (1, 2 k u), up, and x - point parallel to it
   MLS_CHECK_NEAR(cp.normal.dot(V2(1., 2 * k * cp.point[0]).normalized()), 0., 1e-12);
@@ -264,7 +264,7 @@ void check_quadric(const Quadric& Q, const V3& x, Worst& worst, double tol = 1e-
   worst.add(e);
   MLS_CHECK_MSG(e <= tol, desc + " mine " + mls_test::fmt(d) + " brute " + mls_test::fmt(db));
   MLS_CHECK_NEAR(cp.normal.norm(), 1., 1e-12);
-  MLS_CHECK(!cp.is_singular && cp.direction == V3::Zero());
+  MLS_CHECK(!cp.is_on_feature && cp.direction == V3::Zero());
   MLS_CHECK(cp.normal[2] > 0);
   // normal orthogonal to the finite-difference tangents of the graph
   const double h = 1e-6;
@@ -363,7 +363,7 @@ MLS_TEST(plane_closest_point) {
   MLS::Plane_function_space<3> p3;
   MLS::Plane_function_space<2> p2;
   const auto c3 = p3.closest_point(p3.identity(), V3(0.1, -2, -0.5));
-  MLS_CHECK(c3.point == V3(0.1, -2, 0) && c3.normal == V3::UnitZ() && c3.signed_distance == -0.5 && !c3.is_singular);
+  MLS_CHECK(c3.point == V3(0.1, -2, 0) && c3.normal == V3::UnitZ() && c3.signed_distance == -0.5 && !c3.is_on_feature);
   const auto c2 = p2.closest_point(p2.identity(), V2(4, 0.25));
   MLS_CHECK(c2.point == V2(4, 0) && c2.normal == V2::UnitY() && c2.signed_distance == 0.25);
 }
@@ -403,17 +403,17 @@ MLS_TEST(wedge_2_random) {
     // apex collapse region: x . d1 <= 0 and x . d2 <= 0
     const bool in_apex_region = x.dot(d1) < -1e-12 && x.dot(d2) < -1e-12;
     if(in_apex_region) {
-      MLS_CHECK(cp.point == V2::Zero() && cp.is_singular);
+      MLS_CHECK(cp.point == V2::Zero() && cp.is_on_feature);
       ++singular;
     }
     if(x.dot(d1) > 1e-9 || x.dot(d2) > 1e-9) MLS_CHECK(cp.point != V2::Zero());
-    if(!cp.is_singular) { // on a ray: normal orthogonal to it and x - point parallel to it
+    if(!cp.is_on_feature) { // on a ray: normal orthogonal to it and x - point parallel to it
       const V2 r = cp.point.normalized();
       MLS_CHECK_LE(std::abs(cp.normal.dot(r)), 1e-12);
       MLS_CHECK_LE(((x - cp.point) - cp.signed_distance * cp.normal).norm(), 1e-12 * (1 + x.norm()));
     }
     // sign flips across the curve, away from the apex
-    if(!cp.is_singular && cp.point.norm() > 1e-3) {
+    if(!cp.is_on_feature && cp.point.norm() > 1e-3) {
       const double eps = 1e-6 * cp.point.norm();
       MLS_CHECK(fs.closest_point(c, cp.point + eps * cp.normal).signed_distance > 0);
       MLS_CHECK(fs.closest_point(c, cp.point - eps * cp.normal).signed_distance < 0);
@@ -432,7 +432,7 @@ MLS_TEST(wedge_2_plane_and_orientation) {
     const auto cp = fs.closest_point(fs.identity(), x);
     MLS_CHECK_NEAR((cp.point - V2(x[0], 0)).norm(), 0., 1e-15);
     MLS_CHECK_NEAR(cp.signed_distance, x[1], 1e-15);
-    MLS_CHECK(!cp.is_singular && cp.normal[1] > 1 - 1e-15);
+    MLS_CHECK(!cp.is_on_feature && cp.normal[1] > 1 - 1e-15);
     // swapped and shifted by 2 pi: the same member
     const auto cq = fs.closest_point(Eigen::Vector2d(CGAL_PI + 2 * CGAL_PI, -2 * CGAL_PI), x);
     MLS_CHECK_NEAR((cq.point - cp.point).norm(), 0., 1e-14);
@@ -443,7 +443,7 @@ MLS_TEST(wedge_2_plane_and_orientation) {
     const auto above = fs.closest_point(c, V2(0, 1)), below = fs.closest_point(c, V2(0, -1));
     MLS_CHECK(above.signed_distance > 0 && below.signed_distance < 0);
     const auto& apex = (c[0] > 0) ? below : above;
-    MLS_CHECK(apex.is_singular && apex.point == V2::Zero());
+    MLS_CHECK(apex.is_on_feature && apex.point == V2::Zero());
     MLS_CHECK_NEAR((apex.normal - V2(0, 1)).norm(), 0., 1e-15);
   }
   // the initial member (sector fit, apex at the origin) reproduces a line and a wedge through it
@@ -517,7 +517,7 @@ void random_fans(unsigned seed, int count, Worst& worst) {
       MLS_CHECK_LE(brute_fan<N>(c, cp.point), 1e-12 * (1 + x.norm()));
       MLS_CHECK_NEAR(cp.normal.norm(), 1., 1e-12);
       MLS_CHECK_NEAR(std::abs(cp.signed_distance), d, 1e-14 * (1 + x.norm()));
-      if(cp.is_singular) {
+      if(cp.is_on_feature) {
         if(cp.direction != V3::Zero()) { // crease: the point is on the ray
           MLS_CHECK_NEAR(cp.direction.norm(), 1., 1e-12);
           MLS_CHECK_LE(cp.point.cross(cp.direction).norm(), 1e-12 * (1 + x.norm()));
@@ -530,7 +530,7 @@ void random_fans(unsigned seed, int count, Worst& worst) {
         MLS_CHECK_LE(std::abs(cp.normal.dot(cp.point)), 1e-12 * (1 + x.norm())); // plane through apex
         const V3 delta = 1e-7 * V3(u(g), u(g), u(g));
         const auto cq = fs.closest_point(c, x + delta);
-        if(!cq.is_singular && (cq.normal - cp.normal).norm() < 1e-12)
+        if(!cq.is_on_feature && (cq.normal - cp.normal).norm() < 1e-12)
           MLS_CHECK_LE(std::abs(cp.normal.dot(cq.point - cp.point)), 1e-14 * (1 + x.norm()) + 1e-9 * delta.norm());
       }
     }
@@ -567,7 +567,7 @@ void check_foot_derivatives(const Space& fs, unsigned seed, std::array<int, 5>& 
       const bool exact = fs.closest_point_derivatives(c, x, cp, dc, dx);
       MLS_CHECK((cp.point - fs.closest_point(c, x).point).norm() == 0.);
       // on the fan, the derivatives exist on the faces: the cones in 3D, the rays in 2D
-      const bool on_face = !cp.is_singular && cp.point != V::Zero() && exact;
+      const bool on_face = !cp.is_on_feature && cp.point != V::Zero() && exact;
       if(on_fan) {
         if(!exact) ++pieces[4];
         else ++pieces[3];
@@ -607,7 +607,7 @@ void check_foot_derivatives(const Space& fs, unsigned seed, std::array<int, 5>& 
       if(!same_piece || on_fan) continue;
       worst = std::max(worst, error);
       MLS_CHECK_LE(error, 1e-6 * (1 + x.norm()));
-      ++pieces[(cp.is_singular || D == 2) ? 1 : 0];
+      ++pieces[(cp.is_on_feature || D == 2) ? 1 : 0];
     }
   }
 }
@@ -655,7 +655,7 @@ MLS_TEST(wedge_fan_3_edge) {
       const V3 perp(0, x[1], x[2]);
       if(perp.dot(w1) < -1e-9 && perp.dot(w2) < -1e-9) {
         ++singular;
-        MLS_CHECK(cp.is_singular);
+        MLS_CHECK(cp.is_on_feature);
         MLS_CHECK_NEAR((cp.point - V3(x[0], 0, 0)).norm(), 0., 1e-15 * (1 + x.norm()));
         MLS_CHECK_NEAR(std::abs(cp.direction.dot(V3::UnitX())), 1., 1e-15);
         MLS_CHECK_NEAR(cp.direction.dot(V3::UnitX()), x[0] >= 0 ? 1. : -1., 1e-15);
@@ -665,7 +665,7 @@ MLS_TEST(wedge_fan_3_edge) {
       } else if(perp.dot(w1) > 1e-9 || perp.dot(w2) > 1e-9) {
         if(std::abs(d1 - d2) > 1e-9) { // off the medial surface: above a face
           ++smooth;
-          MLS_CHECK(!cp.is_singular);
+          MLS_CHECK(!cp.is_on_feature);
         }
       }
     }
@@ -711,12 +711,12 @@ MLS_TEST(wedge_fan_3_cube_corner) {
     const int negatives = (x[0] < -1e-9) + (x[1] < -1e-9) + (x[2] < -1e-9);
     if(negatives == 3) { // the apex collapse region
       ++apex;
-      MLS_CHECK(cp.is_singular && cp.point == V3::Zero() && cp.direction == V3::Zero());
+      MLS_CHECK(cp.is_on_feature && cp.point == V3::Zero() && cp.direction == V3::Zero());
       MLS_CHECK_NEAR((R.transpose() * cp.normal - n).norm(), 0., 1e-12);
     } else if(negatives == 2) { // the crease along the positive axis
       ++crease;
       const int k = x[0] >= -1e-9 ? 0 : (x[1] >= -1e-9 ? 1 : 2);
-      MLS_CHECK(cp.is_singular);
+      MLS_CHECK(cp.is_on_feature);
       MLS_CHECK_NEAR((R.transpose() * cp.direction - V3::Unit(k)).norm(), 0., 1e-12);
       MLS_CHECK_NEAR((pw - x[k] * V3::Unit(k)).norm(), 0., 1e-12);
     } else if(x.minCoeff() > 1e-9 || negatives == 1) {
@@ -725,11 +725,11 @@ MLS_TEST(wedge_fan_3_cube_corner) {
       std::sort(s.data(), s.data() + 3);
       if(negatives == 1 || s[1] - s[0] > 1e-9) {
         ++face;
-        MLS_CHECK(!cp.is_singular);
+        MLS_CHECK(!cp.is_on_feature);
       }
     }
     MLS_CHECK_NEAR(cp.normal.norm(), 1., 1e-12);
-    if(!cp.is_singular) MLS_CHECK_NEAR(std::abs((R.transpose() * cp.normal).maxCoeff()), 1., 1e-12);
+    if(!cp.is_on_feature) MLS_CHECK_NEAR(std::abs((R.transpose() * cp.normal).maxCoeff()), 1., 1e-12);
   }
   std::cout << "       cube corner: " << apex << " apex, " << crease << " crease, " << face << " face queries\n";
   MLS_CHECK(apex > 100 && crease > 100 && face > 100);
@@ -745,12 +745,12 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
     for(const auto& cp : {fs.closest_point(fs.identity(), x), fs5.closest_point(fs5.identity(), x)}) {
       MLS_CHECK_NEAR((cp.point - V3(x[0], x[1], 0)).norm(), 0., 1e-14);
       MLS_CHECK_NEAR(cp.signed_distance, x[2], 1e-14);
-      MLS_CHECK(!cp.is_singular && cp.normal == V3::UnitZ());
+      MLS_CHECK(!cp.is_on_feature && cp.normal == V3::UnitZ());
     }
   }
   // on the axis: the apex of a flat fan is a smooth point
   const auto ca = fs.closest_point(fs.identity(), V3(0, 0, -1));
-  MLS_CHECK(!ca.is_singular && ca.point.norm() == 0 && ca.signed_distance == -1);
+  MLS_CHECK(!ca.is_on_feature && ca.point.norm() == 0 && ca.signed_distance == -1);
   // the initial member (apex at the origin) reproduces a tilted plane through the origin
   std::vector<V3> p;
   std::vector<double> w;
@@ -763,7 +763,7 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
   for(const V3& q : p) {
     const auto cp = fs.closest_point(c, q);
     MLS_CHECK_NEAR(cp.signed_distance, 0., 1e-14);
-    MLS_CHECK(!cp.is_singular);
+    MLS_CHECK(!cp.is_on_feature);
     MLS_CHECK_NEAR((cp.normal - V3(-0.4, 0.7, 1).normalized()).norm(), 0., 1e-12);
   }
   // and follows an edge along the first axis: the faces' sectors are exact
@@ -782,7 +782,7 @@ MLS_TEST(wedge_fan_3_plane_and_fit) {
   int flips = 0;
   for(int i = 0; i < 500; ++i) {
     const auto cp = fs.closest_point(cr, V3(u(g), u(g), u(g)));
-    if(cp.is_singular || cp.point.norm() < 1e-2) continue;
+    if(cp.is_on_feature || cp.point.norm() < 1e-2) continue;
     const double eps = 1e-6 * cp.point.norm();
     MLS_CHECK(fs.closest_point(cr, cp.point + eps * cp.normal).signed_distance > 0);
     MLS_CHECK(fs.closest_point(cr, cp.point - eps * cp.normal).signed_distance < 0);

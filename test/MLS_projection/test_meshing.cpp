@@ -376,8 +376,7 @@ MLS_TEST(local_fits_agree_with_exact) {
 // project onto it (is_on_feature). The function vanishes on the true surface to rounding (1e-9 h:
 // the closest-point solves are exact to ~1e-13 h).
 // With the screening (the default), the seeds within h/2 of the crease, where P_L's quadratic
-// leaves a residual of a good fraction of h, must all go to the operator (a fan fit: 8
-// coefficients), and the flanks beyond 3h (where the Gaussian weight of the crease, e^-9, leaves
+// leaves a residual of a good fraction of h, must all go to the operator (a fan fit), and the flanks beyond 3h (where the Gaussian weight of the crease, e^-9, leaves
 // P_L's quadratic a residual far below the threshold) must not.
 MLS_TEST(local_fits_exact_at_a_sampled_crease) {
   using Wedge = CGAL::MLS::Unified_projection<K, CGAL::MLS::Wedge_fan_function_space<3>>;
@@ -422,13 +421,13 @@ MLS_TEST(local_fits_exact_at_a_sampled_crease) {
     std::size_t near = 0, near_by_fan = 0, far = 0, far_by_levin = 0;
     for(const auto& r : f.projected_seeds()) {
       const double x = std::abs(CGAL::to_double(r.point.x()));
-      const bool fan = r.coefficients.size() == 8;
+      const bool fan = r.fit_kind == CGAL::MLS::Local_fit_kind::CLOSEST_POINT;
       if(x <= 0.5 * h) {
         ++near;
         near_by_fan += fan ? 1 : 0;
       } else if(x >= 3 * h && x < 1.) { // 3h from the crease, 0.1 from the border of the data
         ++far;
-        far_by_levin += r.coefficients.size() == 6 ? 1 : 0;
+        far_by_levin += r.fit_kind == CGAL::MLS::Local_fit_kind::LEVIN ? 1 : 0;
       }
     }
     double worst = 0;

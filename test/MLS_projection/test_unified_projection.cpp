@@ -720,8 +720,8 @@ MLS_TEST(projection_property_of_the_closest_point_operators) {
 }
 
 // The mixed space's screening and complexity penalty: on a sampled cube near edges and corners it
-// keeps the fan (8 coefficients) and is as exact as P_U(wedge); on a noiseless sphere P_L's
-// quadratic (6 coefficients) explains the data and is kept.
+// keeps the fan (the closest-point operator's fit) and is as exact as P_U(wedge); on a noiseless
+// sphere P_L's quadratic explains the data and is kept.
 MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
   {
     const auto pts = cube(0.025);
@@ -737,7 +737,7 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
       const auto res = PM.project(Epick::Point_3(x[0], x[1], x[2]));
       MLS_CHECK(res.is_success());
       worst = std::max(worst, std::abs(cube_distance(eig(res.point))));
-      fan += res.coefficients.size() == 8;
+      fan += res.fit_kind == MLS::Local_fit_kind::CLOSEST_POINT && res.coefficients.size() == 8;
     }
     std::cout << "  mixed on the cube: max distance " << worst << " (h = " << h << "), fan kept for " << fan << "/20\n";
     // as P_U(wedge) on the 3D edges: measured 9e-9 with clang, less with gcc
@@ -753,7 +753,7 @@ MLS_TEST(mixed_space_keeps_the_fan_at_creases_and_the_quadratic_elsewhere) {
     for(int i = 0; i < 40; ++i) {
       const Epick::Point_3& p = sphere[i * 97 % n];
       const auto res = PM.project(Epick::Point_3(1.02 * p.x(), 1.02 * p.y(), 1.02 * p.z()));
-      quadratic += res.coefficients.size() == 6;
+      quadratic += res.fit_kind == MLS::Local_fit_kind::LEVIN && res.coefficients.size() == 6;
       worst = std::max(worst, std::abs(eig(res.point).norm() - 1));
     }
     std::cout << "  mixed on a sphere: quadratic kept for " << quadratic << "/40, max distance " << worst
@@ -786,7 +786,7 @@ MLS_TEST(mixed_space_is_not_worse_than_levin_on_a_noisy_cube) {
       const auto smooth = PM.smooth_projection().project(pts[i]);
       const auto mixed = PM.project(pts[i]);
       MLS_CHECK(smooth.is_success() && mixed.is_success());
-      fan += mixed.coefficients.size() == 8;
+      fan += mixed.fit_kind == MLS::Local_fit_kind::CLOSEST_POINT;
       const double d[2] = {cube_distance(eig(smooth.point)), cube_distance(eig(mixed.point))};
       for(int k = 0; k < 2; ++k) {
         sum[k] += d[k] * d[k];
@@ -869,7 +869,7 @@ MLS_TEST(noise_estimate_measures_noise_not_creases_or_curvature) {
     MLS_CHECK(PM.sharp_bandwidth() >= 0.5 * h && PM.sharp_bandwidth() <= 0.7 * h);
     int fan = 0;
     for(double z : {-0.3, -0.1, 0.1, 0.3}) // near the edge x = y = 0.5
-      fan += PM.project(Epick::Point_3(0.5 + 0.1 * h, 0.5 + 0.1 * h, z)).coefficients.size() == 8;
+      fan += PM.project(Epick::Point_3(0.5 + 0.1 * h, 0.5 + 0.1 * h, z)).fit_kind == MLS::Local_fit_kind::CLOSEST_POINT;
     MLS_CHECK(fan == 4);
   }
   {

@@ -71,8 +71,8 @@ Parameters fit(const Eigen::Matrix<double, D, 1>* p, const double* w, std::size_
 /// The closest point of `x` (frame coordinates) on the member `c`, with the unit normal
 /// there (oriented "up", towards \f$+e_D\f$ for a graph; the normalised sum of the adjacent
 /// faces' normals at a crease or apex), the signed distance (positive on the side of the
-/// normal), and whether the point is singular (with the crease direction in 3D). See
-/// `CGAL::MLS::Closest_point<D>`.
+/// normal), and whether the point is on a feature, a crease or apex (with the crease direction
+/// in 3D). See `CGAL::MLS::Closest_point<D>`.
 CGAL::MLS::Closest_point<D> closest_point(const Parameters& c, const Eigen::Matrix<double, D, 1>& x) const;
 
 /// @}

@@ -22,13 +22,13 @@ struct Closest_point {
   /// The closest point of \f$x\f$ on the graph (or fan) of \f$f\f$.
   Vector point;
   /// The unit normal of \f$f\f$ at `point`, on the "up" side (the side of \f$+e_D\f$ for a
-  /// graph). At a singular point, the normalised sum of the normals of the adjacent faces.
+  /// graph). At a point on a feature, the normalised sum of the normals of the adjacent faces.
   Vector normal;
   /// \f$+|x - \mathrm{point}|\f$ when \f$(x - \mathrm{point})\cdot\mathrm{normal} > 0\f$, else
   /// \f$-|x - \mathrm{point}|\f$: continuous across the surface, the residual of the unified operator.
   double signed_distance = 0;
   /// `true` when `point` lies on a crease or at the apex of \f$f\f$ (a \f$C^0\f$ feature).
-  bool is_singular = false;
+  bool is_on_feature = false;
   /// The unit direction of the crease through `point` (3D, on a crease, or at an apex that lies
   /// on a crease, as that of a fan whose faces lie in two planes); zero at a corner, at smooth
   /// points and in 2D.

@@ -129,7 +129,7 @@ struct has_foot_derivatives<S, std::void_t<decltype(std::declval<const S&>().clo
 /// near the last query). `project_points()` does this along a Hilbert curve of its queries.
 ///
 /// The optimisation works in units of \f$h\f$: the result's `coefficients` are those of the
-/// member with every length divided by \f$h\f$.
+/// member with every length divided by \f$h\f$ (its `fit_kind` is `Local_fit_kind::CLOSEST_POINT`).
 ///
 /// The result's `is_on_feature` and `feature_direction` tell whether \f$C_{H,f}(r)\f$ lies on a
 /// crease or apex of \f$f\f$.
@@ -543,13 +543,13 @@ protected:
   bool on_a_piece_with_data(const Fit& f, const Neighborhood<D>& nbh) const {
     constexpr double same = 1 - 5e-13; // the cosine of 1e-6 rad
     const Closest_point<D>& at = f.at_r;
-    if(at.is_singular) {
+    if(at.is_on_feature) {
       if(!(at.direction.squaredNorm() > 0)) return true;
       // the distinct normals of the faces along the crease that carry data, until two of them
       // are the crease's faces (their normalised sum is the crease's normal)
       std::vector<V> faces;
       return visit_weighted_points(f, nbh, [&](double, const Closest_point<D>& cp) {
-        if(cp.is_singular || std::abs(cp.normal.dot(at.direction)) > 1e-6) return false;
+        if(cp.is_on_feature || std::abs(cp.normal.dot(at.direction)) > 1e-6) return false;
         for(const V& n : faces)
           if(n.dot(cp.normal) > same) return false;
         for(const V& n : faces)
@@ -560,7 +560,7 @@ protected:
     }
     std::vector<V> on_piece;
     const bool found = visit_weighted_points(f, nbh, [&](double, const Closest_point<D>& cp) {
-      if(cp.is_singular || !(cp.normal.dot(at.normal) > same)) return false;
+      if(cp.is_on_feature || !(cp.normal.dot(at.normal) > same)) return false;
       if constexpr(D == 3) on_piece.push_back(cp.point);
       return D == 2;
     });
@@ -1029,16 +1029,17 @@ protected:
     for(int j = 0; j < D - 1; ++j) tangents[j] = fit.frame.axes.col(j);
     this->set_geometry(res, point, normal, V(h * fit.frame.origin), fit.frame.normal(), tangents);
     res.coefficients.assign(fit.c.data(), fit.c.data() + P);
+    res.fit_kind = Local_fit_kind::CLOSEST_POINT;
     res.energy = fit.energy * h * h;
     res.iterations = iterations;
     res.number_of_neighbors = nbh.size();
     if constexpr(kind != Operator_kind::SINGLE_PHASE) {
-      // A singular C(r) is a feature of the data only if no single hyperplane explains the
-      // weighted points as well as the fit: a fan can also have an apex or a crease on a flat
-      // region (coplanar faces but one, which no point supports).
+      // A C(r) on a feature of the member is one of the data only if no single hyperplane
+      // explains the weighted points as well as the fit: a fan can also have an apex or a crease
+      // on a flat region (coplanar faces but one, which no point supports).
       const auto pca = internal::weighted_pca<D>(unit.points, w);
       const bool is_feature = pca.valid && pca.eigenvalues[0] > 4. * fit.energy + 1e-14;
-      res.is_on_feature = cp.is_singular && is_feature;
+      res.is_on_feature = cp.is_on_feature && is_feature;
       if(res.is_on_feature)
         res.feature_direction = internal::Kernel_types<GeomTraits, D>::to_vector(fit.frame.vector_to_local(cp.direction));
     }

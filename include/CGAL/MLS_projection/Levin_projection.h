@@ -195,6 +195,7 @@ public:
     Result res;
     this->set_geometry(res, point, normal, q, n, tangents);
     res.coefficients.assign(c.data(), c.data() + c.size());
+    res.fit_kind = Local_fit_kind::LEVIN;
     res.energy = W > 0 ? E / W : 0.;
     res.iterations = frame.iterations;
     res.number_of_neighbors = local.size();

@@ -83,28 +83,27 @@ inline Closest_point<3> polynomial_graph_closest_point(const double* c, const Ve
   return cp;
 }
 
-/// How the local fits of a projection operator are evaluated: `unit()` is the length unit of
-/// its coefficients and frame coordinates (\f$h\f$ for the closest-point operators, which work in
-/// units of \f$h\f$, 1 for Levin's), `closest_point()` the closest point on the member with
-/// coefficients `c` (their number: `count`) in frame coordinates, in that unit.
+/// How the local fits of a projection operator are evaluated: `accepts(kind)` whether it reads
+/// the fits of that kind, `unit()` the length unit of their coefficients and frame coordinates
+/// (\f$h\f$ for the closest-point operators, which work in units of \f$h\f$, 1 for Levin's),
+/// `closest_point()` the closest point on the member with coefficients `c` in frame coordinates,
+/// in that unit.
 template <class Projection> struct Local_fit_evaluator;
 
 template <class GeomTraits>
 struct Local_fit_evaluator<Levin_projection<GeomTraits, Polynomial_function_space<3>>> {
   explicit Local_fit_evaluator(const Levin_projection<GeomTraits, Polynomial_function_space<3>>&) {}
   static double unit(double) { return 1.; }
-  static bool accepts(int count) { return count == 6; }
-  Closest_point<3> closest_point(const double* c, int, const Vec<3>& y) const {
-    return polynomial_graph_closest_point(c, y);
-  }
+  static bool accepts(Local_fit_kind k) { return k == Local_fit_kind::LEVIN; }
+  Closest_point<3> closest_point(const double* c, const Vec<3>& y) const { return polynomial_graph_closest_point(c, y); }
 };
 
 template <class GeomTraits>
 struct Local_fit_evaluator<Levin_projection<GeomTraits, Plane_function_space<3>>> {
   explicit Local_fit_evaluator(const Levin_projection<GeomTraits, Plane_function_space<3>>&) {}
   static double unit(double) { return 1.; }
-  static bool accepts(int count) { return count == 0; }
-  Closest_point<3> closest_point(const double*, int, const Vec<3>& y) const {
+  static bool accepts(Local_fit_kind k) { return k == Local_fit_kind::LEVIN; }
+  Closest_point<3> closest_point(const double*, const Vec<3>& y) const {
     return Plane_function_space<3>().closest_point(Plane_function_space<3>::Parameters(), y);
   }
 };
@@ -114,16 +113,15 @@ struct Local_fit_evaluator<Closest_point_projection<GeomTraits, Space, kind>> {
   static_assert(Space::number_of_parameters <= max_local_fit_parameters, "too many parameters for a cached local fit");
   explicit Local_fit_evaluator(const Closest_point_projection<GeomTraits, Space, kind>& p) : space(p.function_space()) {}
   static double unit(double h) { return h; }
-  static bool accepts(int count) { return count == Space::number_of_parameters; }
-  Closest_point<3> closest_point(const double* c, int, const Vec<3>& y) const {
+  static bool accepts(Local_fit_kind k) { return k == Local_fit_kind::CLOSEST_POINT; }
+  Closest_point<3> closest_point(const double* c, const Vec<3>& y) const {
     return space.closest_point(Eigen::Map<const typename Space::Parameters>(c), y);
   }
   Space space;
 };
 
-// The sharp fits of a mixed projection; its smooth fits are P_L's, told apart by their number of
-// coefficients (see `levin_quadratic_parameters`); the sharp ones are in units of the sharp
-// operator's bandwidth.
+// The sharp fits of a mixed projection, in units of the sharp operator's bandwidth; its smooth
+// fits are P_L's, which the screening evaluates.
 template <class GeomTraits, Operator_kind kind, class Sharp>
 struct Local_fit_evaluator<Mixed_projection<GeomTraits, 3, kind, Sharp>>
     : Local_fit_evaluator<typename Mixed_projection<GeomTraits, 3, kind, Sharp>::Sharp_projection> {
@@ -149,7 +147,7 @@ inline double smoothstep(double s) {
 
 /// The operator that projects the seeds of `MLS_implicit_function<Projection>`: screened by P_L
 /// for the operators that find creases, the operator itself for the others.
-template <class Projection, bool = finds_creases<Projection>::value>
+template <class Projection, bool = finds_features<Projection>::value>
 struct Seed_projection {
   using type = Levin_screened_projection<Projection>;
   static constexpr bool screens = true;
@@ -461,7 +459,8 @@ private:
     M axes = M::Identity(); // columns: tangents, frame normal
     double unit = 1;        // the length unit of the coefficients
     double sign = 1;        // +1 when the space's "up" side is outside
-    int count = 0;
+    int count = 0;          // the number of coefficients (0: the frame's plane)
+    Local_fit_kind kind = Local_fit_kind::NONE;
     std::array<double, internal::max_local_fit_parameters> c{};
   };
 
@@ -491,13 +490,12 @@ private:
     Status status = Status::VALID;
   };
 
-  // A fit of P_L's quadratic among the fits of a screened operator.
-  static bool is_levin_fit(int count) { return screens && count == internal::levin_quadratic_parameters; }
-  static bool accepts(int count) { return is_levin_fit(count) || Evaluator::accepts(count); }
+  // A fit of the screening's P_L quadratic among the fits of a screened operator.
+  static bool is_screening_fit(Local_fit_kind kind) { return screens && kind == Local_fit_kind::LEVIN; }
 
   static Closest_point<3> fit_closest_point(const Data& d, const Fit& f, const V& y) {
-    if(is_levin_fit(f.count)) return internal::polynomial_graph_closest_point(f.c.data(), y);
-    return d.evaluator.closest_point(f.c.data(), f.count, y);
+    if(is_screening_fit(f.kind)) return internal::polynomial_graph_closest_point(f.c.data(), y);
+    return d.evaluator.closest_point(f.c.data(), y);
   }
 
   static double fit_distance(const Data& d, const Fit& f, const V& x) {
@@ -575,15 +573,17 @@ private:
     using KT = internal::Kernel_types<Geom_traits, 3>;
     const Samples& samples = d.projection.samples();
     f.count = int(r.coefficients.size());
+    f.kind = r.fit_kind;
     // no coefficients: a plane (the closest-point operators fall back on Levin's plane)
-    if(!r.is_success() || !(f.count == 0 || accepts(f.count)) || f.count > internal::max_local_fit_parameters)
+    if(!r.is_success() || !(f.count == 0 || is_screening_fit(f.kind) || Evaluator::accepts(f.kind)) ||
+       f.count > internal::max_local_fit_parameters)
       return false;
     P = samples.to_local(r.point);
     f.axes.col(0) = KT::to_eigen(r.frame.tangents[0]);
     f.axes.col(1) = KT::to_eigen(r.frame.tangents[1]);
     f.axes.col(2) = KT::to_eigen(r.frame.normal);
     f.origin = samples.to_local(r.frame.origin);
-    f.unit = is_levin_fit(f.count) ? 1. : d.evaluator.unit(d.h);
+    f.unit = f.kind == Local_fit_kind::LEVIN ? 1. : d.evaluator.unit(d.h);
     std::copy(r.coefficients.begin(), r.coefficients.end(), f.c.begin());
     // the "up" normal of the fit at the projected point, and its orientation
     Closest_point<3> cp;

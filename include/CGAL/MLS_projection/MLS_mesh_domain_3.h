@@ -26,6 +26,9 @@
 
 namespace CGAL {
 namespace MLS {
+namespace internal {
+struct Mesh_domain_access; // builds the domain of the function the meshers evaluate (mesher_calls.h)
+} // namespace internal
 
 /// \ingroup PkgMLSProjectionRef
 /// A model of `MeshDomainWithFeatures_3` for CGAL's `make_mesh_3()`: the inside of the closed
@@ -131,22 +134,6 @@ public:
   /// @}
 
   /// \cond SKIP_IN_MANUAL
-  // The domain of a closed surface given as the meshers evaluate it (`function`; `monitor`
-  // counts, stops and reports), bounded by `sphere`, with the intersections within
-  // `relative_error` bounding radii of the surface.
-  MLS_mesh_domain_3(std::function<double(const Point_3&)> function, const Sphere_3& sphere, double relative_error,
-                    std::vector<std::pair<Point_3, Point_3>> probes, std::shared_ptr<internal::Evaluation_monitor> monitor)
-    : MLS_mesh_domain_3([&] {
-        Parts parts;
-        parts.function = std::make_shared<const std::function<double(const Point_3&)>>(std::move(function));
-        parts.monitor = std::move(monitor);
-        parts.sphere = sphere;
-        parts.relative_error = relative_error;
-        parts.probes = std::move(probes);
-        parts.closed = true;
-        return parts;
-      }()) {}
-
   struct Construct_intersection {
     const MLS_mesh_domain_3* domain;
     Intersection operator()(const Segment_3& s) const { return domain->intersection(s.source(), s.target()); }
@@ -178,6 +165,24 @@ public:
   /// \endcond
 
 private:
+  friend struct internal::Mesh_domain_access;
+
+  // The domain of a closed surface given as the meshers evaluate it (`function`; `monitor`
+  // counts, stops and reports), bounded by `sphere`, with the intersections within
+  // `relative_error` bounding radii of the surface.
+  MLS_mesh_domain_3(std::function<double(const Point_3&)> function, const Sphere_3& sphere, double relative_error,
+                    std::vector<std::pair<Point_3, Point_3>> probes, std::shared_ptr<internal::Evaluation_monitor> monitor)
+    : MLS_mesh_domain_3([&] {
+        Parts parts;
+        parts.function = std::make_shared<const std::function<double(const Point_3&)>>(std::move(function));
+        parts.monitor = std::move(monitor);
+        parts.sphere = sphere;
+        parts.relative_error = relative_error;
+        parts.probes = std::move(probes);
+        parts.closed = true;
+        return parts;
+      }()) {}
+
   struct Parts {
     std::shared_ptr<const std::function<double(const Point_3&)>> function;
     std::shared_ptr<internal::Evaluation_monitor> monitor = std::make_shared<internal::Evaluation_monitor>();

@@ -54,8 +54,8 @@ namespace MLS {
 ///
 /// So the smooth parts cost one \f$\mathcal{P}_L\f$ (a few tens of microseconds) and keep its
 /// second-order accuracy, and creases and corners are reproduced by the fan. The result is the
-/// result of the fit kept (its `coefficients` are those of its space: their number tells which,
-/// 6 or 3 for the quadratic in 3D or 2D); `iterations` adds both.
+/// result of the fit kept (its `fit_kind` tells which: `Local_fit_kind::LEVIN` for the quadratic,
+/// `Local_fit_kind::CLOSEST_POINT` for the sharp space); `iterations` adds both.
 ///
 /// \tparam GeomTraits a CGAL kernel
 /// \tparam D the dimension, 2 or 3
@@ -66,8 +66,6 @@ template <class GeomTraits, int D, Operator_kind kind = Operator_kind::UNIFIED,
 class Mixed_projection {
   static_assert(kind != Operator_kind::SINGLE_PHASE, "Mixed_projection: the sharp space is not a graph, use P_U or P_E");
   static_assert(SharpSpace::ambient_dimension == D, "Mixed_projection: the sharp space must have dimension D");
-  static_assert(SharpSpace::number_of_parameters != Polynomial_function_space<D>::number_of_parameters,
-                "the fits of the two spaces are told apart by their number of coefficients");
 
 public:
   /// The two operators combined, and the types of `Closest_point_projection`.

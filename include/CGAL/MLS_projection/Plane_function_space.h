@@ -50,7 +50,7 @@ public:
   Parameters identity() const { return Parameters(); }
 
   /// The orthogonal projection of `x` (frame coordinates) onto the hyperplane \f$x_D = 0\f$:
-  /// normal \f$e_D\f$, signed distance \f$x_D\f$, never singular.
+  /// normal \f$e_D\f$, signed distance \f$x_D\f$, never on a feature.
   Closest_point<D> closest_point(const Parameters&, const Vector& x) const {
     Closest_point<D> cp;
     cp.point = x;

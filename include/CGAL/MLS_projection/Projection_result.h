@@ -28,6 +28,20 @@ struct Local_frame {
 };
 
 /// \ingroup PkgMLSProjectionRef
+/// Which operator made the local fit of a projection result, and so how its `coefficients` read.
+enum class Local_fit_kind {
+  /// No local fit: the projection failed.
+  NONE,
+  /// Levin's \f$\mathcal{P}_L\f$ (also the result of a `LEVIN_FALLBACK`): a member of the Levin
+  /// operator's function space, the graph of a height function over the frame's tangent
+  /// hyperplane, in the input's length unit.
+  LEVIN,
+  /// A closest-point operator (\f$\mathcal{P}_S\f$, \f$\mathcal{P}_E\f$, \f$\mathcal{P}_U\f$):
+  /// a member of its function space in frame coordinates divided by its bandwidth \f$h\f$.
+  CLOSEST_POINT
+};
+
+/// \ingroup PkgMLSProjectionRef
 /// Everything a projection computes. When `status` is not a success (see `is_success()`),
 /// `point` is the query itself and `normal` is the null vector: no field is ever NaN.
 template <class GeomTraits, int D>
@@ -44,13 +58,16 @@ struct Projection_result {
   Local_frame<GeomTraits, D> frame;
   /// The parameters of the local function in `frame`, as documented by the function space.
   std::vector<double> coefficients;
+  /// The operator that fitted `coefficients` (with `Mixed_projection`: `LEVIN` for its smooth
+  /// space, `CLOSEST_POINT` for its sharp one).
+  Local_fit_kind fit_kind = Local_fit_kind::NONE;
   /// The weighted mean squared residual of the final local fit (squared length units).
   double energy = 0;
   /// Iterations of the non-linear optimiser (summed over all starts and rounds).
   int iterations = 0;
   /// The number of input points in the final neighbourhood.
   std::size_t number_of_neighbors = 0;
-  /// `true` when `point` lies on a singular set (crease or apex) of the local function.
+  /// `true` when `point` lies on a feature (crease or apex) of the local function.
   bool is_on_feature = false;
   /// The crease direction when `is_on_feature` (null otherwise, and at an apex).
   Vector feature_direction = NULL_VECTOR;

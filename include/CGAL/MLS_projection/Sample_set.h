@@ -49,7 +49,7 @@ public:
   using FT = typename GeomTraits::FT;                                     ///< the kernel's number type
   using Point = typename internal::Kernel_types<GeomTraits, D>::Point;   ///< `Point_2` or `Point_3`
   using Vector = typename internal::Kernel_types<GeomTraits, D>::Vector; ///< `Vector_2` or `Vector_3`
-  using Local_point = internal::Vec<D>; ///< a point in local (centred) coordinates: `Eigen::Matrix<double, D, 1>`
+  using Local_point = Eigen::Matrix<double, D, 1>; ///< a point in local (centred) coordinates
 
 private:
   using KT = internal::Kernel_types<GeomTraits, D>;

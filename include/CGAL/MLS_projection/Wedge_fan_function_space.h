@@ -47,7 +47,7 @@ namespace MLS {
 /// corner (the three edge directions, and a fourth vector inside one of the faces, so that
 /// its two cones are coplanar and make that face).
 ///
-/// A point is singular when its closest point is on a ray (a crease, `direction` = the ray),
+/// A closest point is on a feature (`is_on_feature`) when it is on a ray (a crease, `direction` = the ray),
 /// unless the two cones meeting there are coplanar (normals within \f$10^{-9}\f$), or at the
 /// apex (unless all cones are coplanar; when the faces lie in two planes, the apex is a point of
 /// their crease and `direction` is the crease's). A closest point within `ray_tolerance` of a
@@ -99,7 +99,7 @@ public:
     return c;
   }
 
-  /// Whether the closest point can be singular: the operators then add starts at creases
+  /// Whether the closest point can be on a feature: the operators then add starts at creases
   /// and apices proposed from the neighbourhood.
   static constexpr bool has_sharp_features = true;
   /// The vectors are free on the circle or sphere, so every rotation of the frame is a member:
@@ -293,7 +293,7 @@ public:
     // or on a crease ray that x lies on.
     if(ray < 0) return false;
     if constexpr(D == 3)
-      if(!cp.is_singular || std::abs(cp.signed_distance) <= 1e-7 * (1. + x.norm())) return false;
+      if(!cp.is_on_feature || std::abs(cp.signed_distance) <= 1e-7 * (1. + x.norm())) return false;
     // on a ray, the foot is (x . v) v
     const V& v = f.v[ray];
     const double t = x.dot(v);
@@ -441,7 +441,7 @@ private:
     } else { // the apex
       cp.point = V::Zero();
       const bool flat = std::abs(na[0] * nb[1] - na[1] * nb[0]) <= coplanarity_tolerance && na.dot(nb) > 0;
-      cp.is_singular = !flat;
+      cp.is_on_feature = !flat;
       const V sum = na + nb;
       const double len = sum.norm();
       cp.normal = (len > 1e-12) ? V(sum / len) : na;
@@ -522,7 +522,7 @@ private:
       if(coplanar(prev, which)) {
         cp.normal = fn[which];
       } else {
-        cp.is_singular = true;
+        cp.is_on_feature = true;
         cp.direction = v[which];
         cp.normal = fn[prev] + fn[which];
       }
@@ -546,7 +546,7 @@ private:
       if(first >= 0 && all_coplanar) {
         cp.normal = fn[first];
       } else {
-        cp.is_singular = true;
+        cp.is_on_feature = true;
         cp.normal = sum;
         if(second >= 0 && two_planes) {
           const V e = fn[first].cross(fn[second]);

@@ -146,7 +146,7 @@ struct Fan_creases {
 template <int N, class GeomTraits>
 bool fan_creases(const Projection_result<GeomTraits, 3>& r, double min_angle, Fan_creases& out) {
   using KT = Kernel_types<GeomTraits, 3>;
-  if(r.coefficients.size() != std::size_t(2 * N)) return false;
+  if(r.fit_kind != Local_fit_kind::CLOSEST_POINT || r.coefficients.size() != std::size_t(2 * N)) return false;
   const Feature_vec t0 = KT::to_eigen(r.frame.tangents[0]), t1 = KT::to_eigen(r.frame.tangents[1]),
                     nz = KT::to_eigen(r.frame.normal);
   if(!(nz.squaredNorm() > 0.5)) return false;

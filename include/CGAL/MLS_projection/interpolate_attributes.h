@@ -22,7 +22,7 @@ namespace MLS {
 namespace internal {
 
 // Calls `f(space, unit, is_graph, weight)` with the function space whose member `fit` holds (told
-// by the number of its coefficients), the length unit of its frame coordinates (1, or h for the
+// by its `fit_kind`), the length unit of its frame coordinates (1, or h for the
 // closest-point operators), whether `f` must use the space's `height()` (a graph fitted by
 // Levin's operator) or its `closest_point()`, and the weight function of the operator that made
 // the fit; returns false (without calling `f`) when the fit is of no known space.
@@ -32,7 +32,7 @@ template <class K, class S>
 struct Fit_space_visitor<Levin_projection<K, S>> {
   template <class Result, class F>
   static bool visit(const Levin_projection<K, S>& p, const Result& fit, F&& f) {
-    if(fit.coefficients.size() != std::size_t(S::number_of_parameters)) return false;
+    if(fit.fit_kind != Local_fit_kind::LEVIN || fit.coefficients.size() != std::size_t(S::number_of_parameters)) return false;
     f(S(), 1., std::true_type(), p.weight());
     return true;
   }
@@ -42,7 +42,9 @@ template <class K, class S, Operator_kind kind>
 struct Fit_space_visitor<Closest_point_projection<K, S, kind>> {
   template <class Result, class F>
   static bool visit(const Closest_point_projection<K, S, kind>& p, const Result& fit, F&& f) {
-    if(fit.coefficients.size() != std::size_t(S::number_of_parameters) || !(p.bandwidth() > 0)) return false;
+    if(fit.fit_kind != Local_fit_kind::CLOSEST_POINT || fit.coefficients.size() != std::size_t(S::number_of_parameters) ||
+       !(p.bandwidth() > 0))
+      return false;
     f(p.function_space(), p.bandwidth(), std::false_type(), p.weight());
     return true;
   }
@@ -69,7 +71,7 @@ struct Fit_space_visitor<Levin_screened_projection<P>> {
 // Whether a neighbour's closest point on a fan lies on the face of normal `face`.
 template <int D>
 bool on_face(const Closest_point<D>& cp, const Vec<D>& face) {
-  return !cp.is_singular && cp.normal.dot(face) > 1. - 1e-6;
+  return !cp.is_on_feature && cp.normal.dot(face) > 1. - 1e-6;
 }
 
 // The weights of the input points of `nbh`, gathered around `x` (local coordinates): the weight
@@ -133,9 +135,9 @@ void attribute_weights(const Projection& projection, const typename Projection::
         const Closest_point<D> at_x = space.closest_point(c, to_frame(x));
         Vec<D> face = at_x.normal;
         double nearest = std::numeric_limits<double>::infinity();
-        for(std::size_t i = 0; at_x.is_singular && i < nbh.size(); ++i) {
+        for(std::size_t i = 0; at_x.is_on_feature && i < nbh.size(); ++i) {
           const double d = (cps[i].point - at_x.point).squaredNorm();
-          if(kept[i] && !cps[i].is_singular && d < nearest) {
+          if(kept[i] && !cps[i].is_on_feature && d < nearest) {
             nearest = d;
             face = cps[i].normal;
           }

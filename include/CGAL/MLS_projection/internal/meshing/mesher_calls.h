@@ -272,6 +272,12 @@ std::size_t insert_missed_initial_points(C3t3& c3t3, const Domain& domain, doubl
 /// (TBB). When Mesh_3 fails with the polylines (a CGAL error, e.g. on polylines too close to each
 /// other), it meshes again without them and says so in `features_dropped`. On failure or
 /// cancellation, `mesh` is cleared.
+// Builds MLS_mesh_domain_3's domain of a function as the meshers evaluate it (a private constructor).
+struct Mesh_domain_access {
+  template <class Domain, class... Args>
+  static Domain make(Args&&... args) { return Domain(std::forward<Args>(args)...); }
+};
+
 template <class ConcurrencyTag, class GeomTraits, class PolygonMesh>
 Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& mesh) {
 #ifndef CGAL_LINKED_WITH_TBB
@@ -299,7 +305,7 @@ Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& 
       seconds = (std::max)(1e-9, in.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return std::make_unique<Meshing_watchdog>(*monitor, seconds, true);
   };
-  Domain domain(in.function, in.bounding_sphere, in.relative_error_bound, in.probes, monitor);
+  Domain domain = Mesh_domain_access::make<Domain>(in.function, in.bounding_sphere, in.relative_error_bound, in.probes, monitor);
   // the domain with the polylines, when there are any (`domain` stays without: the fall-back)
   std::optional<Domain> featured;
   std::vector<std::vector<Point_3>> polylines;

@@ -35,7 +35,7 @@ std::vector<std::vector<typename ImplicitFunction::Point_3>> feature_polylines(c
   number_of_corners = 0;
   queries = 0;
   using Projection = typename ImplicitFunction::Projection_type;
-  if constexpr(finds_creases<Projection>::value) {
+  if constexpr(finds_features<Projection>::value) {
     if(!function.has_seed_projection()) return {};
     auto features = detect_sharp_features<ConcurrencyTag>(function.seed_projection(), function.projected_seeds());
     number_of_corners = features.corners.size();

@@ -29,11 +29,11 @@ namespace internal {
 
 // Whether a projection operator finds creases (its results' `is_on_feature`): the wedge fan,
 // alone or in the mixed space.
-template <class Projection> struct finds_creases : std::false_type {};
+template <class Projection> struct finds_features : std::false_type {};
 template <class K, int N, Operator_kind kind>
-struct finds_creases<Closest_point_projection<K, Wedge_fan_function_space<3, N>, kind>> : std::true_type {};
+struct finds_features<Closest_point_projection<K, Wedge_fan_function_space<3, N>, kind>> : std::true_type {};
 template <class K, Operator_kind kind, class Sharp>
-struct finds_creases<Mixed_projection<K, 3, kind, Sharp>> : std::true_type {};
+struct finds_features<Mixed_projection<K, 3, kind, Sharp>> : std::true_type {};
 
 template <class Projection> struct is_mixed_projection : std::false_type {};
 template <class K, int D, Operator_kind kind, class Sharp>
@@ -47,11 +47,7 @@ double noise_variance(const Projection& projection) {
   else return estimate_noise_variance(projection.samples());
 }
 
-// The number of coefficients of P_L's quadratic (Polynomial_function_space<3>): the local fits of
-// a screened operator are told apart by it, so the operator's spaces must not have as many.
-constexpr int levin_quadratic_parameters = Polynomial_function_space<3>::number_of_parameters;
-
-/// `Projection` (a model of `finds_creases`) screened by P_L with a quadratic: `project(q)` is
+/// `Projection` (a model of `finds_features`) screened by P_L with a quadratic: `project(q)` is
 /// P_L(q) when that succeeds with `energy <= threshold` (absolute squared length), else the
 /// operator's projection; for `Mixed_projection`, only its sharp operator runs then, and its fit
 /// is kept when `prefers_sharp(P_L(q), sharp)` (P_L's quadratic stands for the smooth space: its
@@ -61,7 +57,7 @@ constexpr int levin_quadratic_parameters = Polynomial_function_space<3>::number_
 /// `detect_sharp_features()` need (`Sharp_projection` for the latter's helper points).
 template <class Projection>
 class Levin_screened_projection {
-  static_assert(finds_creases<Projection>::value, "Levin_screened_projection: an operator that finds creases");
+  static_assert(finds_features<Projection>::value, "Levin_screened_projection: an operator that finds creases");
 
 public:
   using Operator = Projection;
@@ -77,8 +73,6 @@ public:
   template <class P, class = void> struct sharp_of { using type = P; };
   template <class P> struct sharp_of<P, std::void_t<typename P::Sharp_projection>> { using type = typename P::Sharp_projection; };
   using Sharp_projection = typename sharp_of<Projection>::type;
-  static_assert(Sharp_projection::Function_space::number_of_parameters != levin_quadratic_parameters,
-                "the sharp fits are told apart from P_L's by their number of coefficients");
 
   Levin_screened_projection(const Projection& projection, double threshold)
     : operator_(projection), levin_(projection.shared_samples(), levin_options(projection)), threshold_(threshold) {}
