@@ -264,6 +264,12 @@ std::size_t insert_missed_initial_points(C3t3& c3t3, const Domain& domain, doubl
   return inserted;
 }
 
+// Builds MLS_mesh_domain_3's domain of a function as the meshers evaluate it (a private constructor).
+struct Mesh_domain_access {
+  template <class Domain, class... Args>
+  static Domain make(Args&&... args) { return Domain(std::forward<Args>(args)...); }
+};
+
 /// Meshes the surface \f$f = 0\f$ with Mesh_3 (`make_mesh_3` on `Labeled_mesh_domain_3::
 /// create_implicit_mesh_domain`, polylines added with `add_features`), criteria facet angle,
 /// size and distance (edge size along the polylines), no cell criteria, no perturbation nor
@@ -272,12 +278,6 @@ std::size_t insert_missed_initial_points(C3t3& c3t3, const Domain& domain, doubl
 /// (TBB). When Mesh_3 fails with the polylines (a CGAL error, e.g. on polylines too close to each
 /// other), it meshes again without them and says so in `features_dropped`. On failure or
 /// cancellation, `mesh` is cleared.
-// Builds MLS_mesh_domain_3's domain of a function as the meshers evaluate it (a private constructor).
-struct Mesh_domain_access {
-  template <class Domain, class... Args>
-  static Domain make(Args&&... args) { return Domain(std::forward<Args>(args)...); }
-};
-
 template <class ConcurrencyTag, class GeomTraits, class PolygonMesh>
 Mesher_report mesh_with_mesh_3(const Mesher_input<GeomTraits>& in, PolygonMesh& mesh) {
 #ifndef CGAL_LINKED_WITH_TBB
