@@ -57,7 +57,7 @@ double noise_variance(const Projection& projection) {
 /// `detect_sharp_features()` need (`Sharp_projection` for the latter's helper points).
 template <class Projection>
 class Levin_screened_projection {
-  static_assert(finds_features<Projection>::value, "Levin_screened_projection: an operator that finds creases");
+  static_assert(finds_features<Projection>::value, "Levin_screened_projection: an operator that finds features");
 
 public:
   using Operator = Projection;
