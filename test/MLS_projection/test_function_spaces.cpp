@@ -507,9 +507,15 @@ void random_fans(unsigned seed, int count, Worst& worst) {
   for(int t = 0; t < count; ++t) {
     Eigen::Matrix<double, 2 * N, 1> c;
     for(int i = 0; i < N; ++i) { c[2 * i] = lat(g); c[2 * i + 1] = lon(g); }
+    const auto prepared = fs.prepare_member(c);
     for(int j = 0; j < 10; ++j) {
       const V3 x(u(g), u(g), u(g));
       const auto cp = fs.closest_point(c, x);
+      // the fan prepared once gives the same closest point, to the last bit (the implicit
+      // function's values must not depend on it)
+      const auto q = fs.closest_point(prepared, x);
+      MLS_CHECK(q.point == cp.point && q.normal == cp.normal && q.signed_distance == cp.signed_distance &&
+                q.is_on_feature == cp.is_on_feature && q.direction == cp.direction);
       const double d = (x - cp.point).norm(), db = brute_fan<N>(c, x);
       const double e = rel_error(d, db, x.norm());
       worst.add(e);

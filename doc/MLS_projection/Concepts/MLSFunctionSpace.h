@@ -100,6 +100,18 @@ bool closest_point_derivatives(const Parameters& c, const Eigen::Matrix<double, 
                                Eigen::Matrix<double, D, number_of_parameters>& d_parameters,
                                Eigen::Matrix<double, D, D>& d_point) const;
 
+/// Optional, with the next two. A member prepared for many closest-point queries (what
+/// `closest_point()` computes from the parameters before it looks at `x`).
+typedef unspecified_type Prepared_member;
+
+/// Optional. The member `c` prepared once for `closest_point(const Prepared_member&, x)`.
+Prepared_member prepare_member(const Parameters& c) const;
+
+/// Optional. The closest point of `x` on the prepared member `m`, the same as `closest_point(c,
+/// x)` for the `c` that `m` was prepared from. With it, `MLS_implicit_function` prepares the
+/// local fit of each seed once and evaluates it from there.
+CGAL::MLS::Closest_point<D> closest_point(const Prepared_member& m, const Eigen::Matrix<double, D, 1>& x) const;
+
 /// Optional. A dimensionless residual added to the energy, zero for the members the space
 /// considers plausible at bandwidth `h` (the quadratic spaces bound the curvature).
 double regularization(const Parameters& c, double h) const;

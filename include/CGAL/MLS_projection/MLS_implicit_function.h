@@ -108,17 +108,37 @@ struct Local_fit_evaluator<Levin_projection<GeomTraits, Plane_function_space<3>>
   }
 };
 
+// The members of a space prepared for many closest-point queries (`Prepared_member`, e.g. the
+// wedge fan's vectors computed once from their angles), void when the space has none.
+template <class S, class = void> struct prepared_member { using type = void; };
+template <class S> struct prepared_member<S, std::void_t<typename S::Prepared_member>> {
+  using type = typename S::Prepared_member;
+};
+
 template <class GeomTraits, class Space, Operator_kind kind>
 struct Local_fit_evaluator<Closest_point_projection<GeomTraits, Space, kind>> {
   static_assert(Space::number_of_parameters <= max_local_fit_parameters, "too many parameters for a cached local fit");
+  using Prepared = typename prepared_member<Space>::type;
   explicit Local_fit_evaluator(const Closest_point_projection<GeomTraits, Space, kind>& p) : space(p.function_space()) {}
   static double unit(double h) { return h; }
   static bool accepts(Local_fit_kind k) { return k == Local_fit_kind::CLOSEST_POINT; }
   Closest_point<3> closest_point(const double* c, const Vec<3>& y) const {
     return space.closest_point(Eigen::Map<const typename Space::Parameters>(c), y);
   }
+  template <class S = Space>
+  typename S::Prepared_member prepare(const double* c) const {
+    return space.prepare_member(Eigen::Map<const typename Space::Parameters>(c));
+  }
+  template <class S = Space>
+  Closest_point<3> closest_point(const typename S::Prepared_member& m, const Vec<3>& y) const {
+    return space.closest_point(m, y);
+  }
   Space space;
 };
+
+// The prepared member type of a local-fit evaluator (`Prepared`), void when it has none.
+template <class E, class = void> struct evaluator_prepared { using type = void; };
+template <class E> struct evaluator_prepared<E, std::void_t<typename E::Prepared>> { using type = typename E::Prepared; };
 
 // The sharp fits of a mixed projection, in units of the sharp operator's bandwidth; its smooth
 // fits are P_L's, which the screening evaluates.
@@ -255,6 +275,9 @@ template <class Projection>
 class MLS_implicit_function {
   static_assert(Projection::dimension == 3, "MLS_implicit_function: a 3D projection operator");
   using Evaluator = internal::Local_fit_evaluator<Projection>;
+  // The members of the operator's fits prepared once for the evaluations (see prepare_fits()).
+  using Prepared = typename internal::evaluator_prepared<Evaluator>::type;
+  static constexpr bool prepares = !std::is_void_v<Prepared>;
   static constexpr bool screens = internal::Seed_projection<Projection>::screens;
   // Gap completion (see complete_gaps()): the free angle that makes a seed a rim seed (the
   // neighbours of a seed inside a random sampling leave less than half a turn free); the step
@@ -462,7 +485,9 @@ private:
     int count = 0;          // the number of coefficients (0: the frame's plane)
     Local_fit_kind kind = Local_fit_kind::NONE;
     std::array<double, internal::max_local_fit_parameters> c{};
+    std::uint32_t prepared = no_prepared; // its member in Data::prepared, if any
   };
+  static constexpr std::uint32_t no_prepared = std::numeric_limits<std::uint32_t>::max();
 
   struct Data {
     Data(const Projection& p, const Implicit_function_options& o)
@@ -475,6 +500,7 @@ private:
     std::vector<V> sample_normals; // oriented, indexed like the samples (local coordinates)
     std::shared_ptr<const Samples> seeds; // the projected seeds and their kd-tree
     std::vector<Fit> fits;                // indexed like `seeds`
+    std::vector<std::conditional_t<prepares, Prepared, char>> prepared; // the fits' prepared members
     std::vector<Result> projected;
     std::size_t failed = 0;
     std::size_t unblended = 0;
@@ -495,8 +521,47 @@ private:
 
   static Closest_point<3> fit_closest_point(const Data& d, const Fit& f, const V& y) {
     if(is_screening_fit(f.kind)) return internal::polynomial_graph_closest_point(f.c.data(), y);
+    if constexpr(prepares)
+      if(f.prepared != no_prepared) return d.evaluator.closest_point(d.prepared[f.prepared], y);
     return d.evaluator.closest_point(f.c.data(), y);
   }
+
+  // Whether the member of `f` can be prepared: a fit of the operator's space that can.
+  static bool is_preparable(const Fit& f) {
+    return prepares && f.count > 0 && !is_screening_fit(f.kind) && Evaluator::accepts(f.kind);
+  }
+
+  // Prepares the members of the seeds' fits once (the meshers evaluate each fit thousands of
+  // times; a wedge fan's vectors come from their angles by trigonometry), when the space can.
+  static void prepare_fits(Data& d) {
+    if constexpr(prepares) {
+      for(Fit& f : d.fits) {
+        if(!is_preparable(f)) continue;
+        f.prepared = std::uint32_t(d.prepared.size());
+        d.prepared.push_back(d.evaluator.prepare(f.c.data()));
+      }
+    }
+  }
+
+  // The closest points on the fit `f` (frame coordinates, in its unit), its member prepared once
+  // here when not yet: for the many points of one fit that agrees_with_normals() tests.
+  class Fit_closest_points {
+  public:
+    Fit_closest_points(const Data& d, const Fit& f) : d_(d), f_(f) {
+      if constexpr(prepares)
+        if(f.prepared == no_prepared && is_preparable(f)) member_ = d.evaluator.prepare(f.c.data());
+    }
+    Closest_point<3> operator()(const V& y) const {
+      if constexpr(prepares)
+        if(member_) return d_.evaluator.closest_point(*member_, y);
+      return fit_closest_point(d_, f_, y);
+    }
+
+  private:
+    const Data& d_;
+    const Fit& f_;
+    std::optional<std::conditional_t<prepares, Prepared, char>> member_;
+  };
 
   static double fit_distance(const Data& d, const Fit& f, const V& x) {
     if(f.count == 0) return f.sign * f.axes.col(2).dot(x - f.origin); // a plane (e.g. Levin's fall-back)
@@ -617,9 +682,10 @@ private:
   static bool agrees_with_normals(const Data& d, const Fit& f, const V& P, const V& nP) {
     if(d.sample_normals.empty() || f.count == 0) return true;
     std::size_t wrong = 0, tests = 0;
+    const Fit_closest_points closest(d, f);
     const auto test = [&](const V& x, int expected) {
       ++tests;
-      const Closest_point<3> cp = fit_closest_point(d, f, V(f.axes.transpose() * (x - f.origin) / f.unit));
+      const Closest_point<3> cp = closest(V(f.axes.transpose() * (x - f.origin) / f.unit));
       if(!(cp.normal[2] >= 0.25) || (expected != 0 && !(f.sign * cp.signed_distance * expected > 0))) ++wrong;
     };
     thread_local std::vector<std::size_t> idx;
@@ -772,6 +838,7 @@ private:
     // Sample_set drops nothing here (the points are finite), so the indices agree
     CGAL_assertion(d.seeds->size() == fits.size());
     d.fits = std::move(fits);
+    prepare_fits(d);
 
     // 5. bounding sphere and inner point
     V lo = V::Constant(std::numeric_limits<double>::max()), hi = -lo;

@@ -259,6 +259,21 @@ public:
     return project(prepare(c), x, nullptr);
   }
 
+  class Prepared_member; // defined after the private type it holds
+
+  /// The fan `c` prepared for `closest_point(const Prepared_member&, x)`.
+  Prepared_member prepare_member(const Parameters& c) const {
+    Prepared_member m;
+    m.pieces_ = prepare(c);
+    return m;
+  }
+
+  /// The closest point of `x` (frame coordinates) on the prepared fan `m`: the same as
+  /// `closest_point(c, x)` for the fan `c` that `m` was prepared from.
+  Closest_point<D> closest_point(const Prepared_member& m, const Vector& x) const {
+    return closest_point_on(m.pieces_, x);
+  }
+
   /// The closest point `cp` of `x` on the fan `c` and the derivatives of its position on the cone
   /// or ray that holds it: by the parameters in `d_parameters`, by `x` in `d_point`. Returns false
   /// (the derivatives zero) where they are one-sided, the closest point moving onto a face beside
@@ -269,10 +284,7 @@ public:
                                  Eigen::Matrix<double, D, D>& d_point) const {
     const Fan f = prepare(c);
     std::array<double, number_of_vectors> coef;
-    coef.fill(0.);
-    if constexpr(D == 2) cp = project_2(f, x, coef);
-    else cp = project_3(f, x, coef);
-    internal::set_signed_distance(cp, x);
+    cp = closest_point_on(f, x, coef);
     d_parameters.setZero();
     d_point.setZero();
     // a cone holds the foot when two consecutive coefficients are not zero, a ray when one is
@@ -324,17 +336,46 @@ private:
     return r;
   }
 
-  // A fan prepared for many closest-point queries: the vectors sorted by angle or longitude,
-  // the normals of the pieces, and the derivatives of the vectors by their parameters.
-  struct Fan {
+  // The pieces of a fan, what its closest points need: the vectors sorted by angle or longitude
+  // and the normals of the pieces.
+  struct Pieces {
     std::array<V, number_of_vectors> v;      // sorted vectors
     std::array<V, number_of_vectors> fn;     // 3D: normal of cone j = (v[j], v[j+1]); 2D: normal of ray j
     std::array<bool, number_of_vectors> ok;  // 3D: cone j is not degenerate
     std::array<double, number_of_vectors> cn{}; // 3D: v[j] . v[j+1]
     std::array<double, number_of_vectors> inverse_det{}; // 3D: 1 / (1 - cn[j]^2) for a cone that is not degenerate
+  };
+
+public:
+  /// A fan prepared for many closest-point queries: its vectors and faces, computed once from
+  /// their angles.
+  class Prepared_member {
+    friend class Wedge_fan_function_space;
+    Pieces pieces_;
+  };
+
+private:
+  // A fan prepared for many closest-point queries: its pieces, and the derivatives of the vectors
+  // by their parameters.
+  struct Fan : Pieces {
     std::array<int, number_of_vectors> order; // index (in the parameters) of the j-th sorted vector
     std::array<std::array<V, 2>, number_of_vectors> dv; // d v[j] / d (its parameters)
   };
+
+  // The closest point of x on the fan of `pieces`, and the foot's coefficients on the sorted vectors.
+  static Closest_point<D> closest_point_on(const Pieces& pieces, const V& x, std::array<double, number_of_vectors>& coef) {
+    coef.fill(0.);
+    Closest_point<D> cp;
+    if constexpr(D == 2) cp = project_2(pieces, x, coef);
+    else cp = project_3(pieces, x, coef);
+    internal::set_signed_distance(cp, x);
+    return cp;
+  }
+
+  static Closest_point<D> closest_point_on(const Pieces& pieces, const V& x) {
+    std::array<double, number_of_vectors> coef;
+    return closest_point_on(pieces, x, coef);
+  }
 
   static Fan prepare(const Parameters& c) {
     Fan f;
@@ -385,11 +426,7 @@ private:
   // The closest point of x on the prepared fan; the foot is sum_j coef[j] v[j] (sorted order).
   static Closest_point<D> project(const Fan& f, const V& x, Parameters* gradient) {
     std::array<double, number_of_vectors> coef;
-    coef.fill(0.);
-    Closest_point<D> cp;
-    if constexpr(D == 2) cp = project_2(f, x, coef);
-    else cp = project_3(f, x, coef);
-    internal::set_signed_distance(cp, x);
+    const Closest_point<D> cp = closest_point_on(f, x, coef);
     if(gradient) {
       V g = cp.normal;
       if(std::abs(cp.signed_distance) > 0.) g = (x - cp.point) / cp.signed_distance;
@@ -427,7 +464,7 @@ private:
     }
   }
 
-  static Closest_point<2> project_2(const Fan& f, const V& x, std::array<double, 2>& coef) {
+  static Closest_point<2> project_2(const Pieces& f, const V& x, std::array<double, 2>& coef) {
     const V &da = f.v[0], &db = f.v[1], &na = f.fn[0], &nb = f.fn[1];
     const double sa = std::max(0., x.dot(da)), sb = std::max(0., x.dot(db));
     const double ea = (x - sa * da).squaredNorm(), eb = (x - sb * db).squaredNorm();
@@ -449,7 +486,7 @@ private:
     return cp;
   }
 
-  static Closest_point<3> project_3(const Fan& f, const V& x, std::array<double, N>& coef) {
+  static Closest_point<3> project_3(const Pieces& f, const V& x, std::array<double, N>& coef) {
     const auto& v = f.v;
     const auto& fn = f.fn;
     const auto& ok = f.ok;
